@@ -1,0 +1,146 @@
+// This file is part of opencv_essential, licensed under the Apache License, Version 2.0.
+// See the LICENSE file at the top of the source tree.
+
+#ifndef OPENCV_ESSENTIAL_HPP
+#define OPENCV_ESSENTIAL_HPP
+
+#include <opencv2/calib3d.hpp>
+#include <opencv2/core.hpp>
+
+#include "opencv2/essential/params.hpp"
+#include "opencv2/essential/solver.hpp"
+
+/** @defgroup essential Essential matrix estimation with iterative minimal-set solvers
+
+Fast, robust estimation of the essential matrix between two calibrated views, after Rosten,
+Reitmayr and Drummond, "Improved RANSAC performance using simple, iterative minimal-set solvers":
+hypotheses come from a tiny Gauss-Newton or Levenberg-Marquardt optimiser on a minimal set of five
+correspondences in a 5-DOF parameterisation (rotation by the SO(3) exponential map, translation as a
+rotated unit vector), are scored by MSAC on the Sampson distance, and the winner is refined on all
+points by iteratively reweighted least squares.
+
+findEssentialMatIter() has every overload of `cv::findEssentialMat` (OpenCV 4.6) with the same
+arguments, defaults, return value and mask, so renaming a call site is enough to switch.
+
+Differences from `cv::findEssentialMat` that a caller may notice:
+- invalid input (fewer than 5 points, non-finite coordinates, a singular camera matrix, prob outside
+  (0, 1), ...) raises cv::Exception naming the argument, where OpenCV may assert, crash or return
+  garbage;
+- with `RANSAC` the returned E is refined on all inliers (set EssentialParams::refine = false in the
+  module's own overload to skip this), and the mask is that of the refined E;
+- the USAC method flags (`USAC_DEFAULT`, `USAC_MAGSAC`, ...) and the UsacParams overload currently run
+  the same adaptive MSAC engine, honouring confidence, threshold, maxIterations and
+  randomGeneratorState; the other UsacParams fields are not used yet.
+*/
+
+namespace cv {
+namespace essential {
+
+//! @addtogroup essential
+//! @{
+
+/** @brief Drop-in replacement for `cv::findEssentialMat(points1, points2, cameraMatrix, method,
+prob, threshold, maxIters, mask)`.
+
+@param points1 N >= 5 points of the first image: `std::vector<Point2f|Point2d>`, an N x 2
+single-channel or N x 1 two-channel Mat, CV_32F or CV_64F.
+@param points2 the N corresponding points of the second image, same layout.
+@param cameraMatrix 3 x 3 intrinsic matrix of both cameras (fx, fy non-zero).
+@param method `RANSAC` or `LMEDS` (the USAC flags are accepted, see the module description).
+@param prob confidence in (0, 1).
+@param threshold maximum Sampson distance, in pixels, of an inlier (RANSAC only); > 0.
+@param maxIters maximum number of RANSAC iterations; > 0.
+@param mask output N x 1 CV_8U: 1 for the inliers of the returned E, 0 otherwise.
+@return E as a 3 x 3 CV_64F Mat; with exactly five points, all the distinct solutions found, stacked
+as a 3n x 3 Mat; an empty Mat (and an all-zero mask) when no essential matrix is found.
+@throws cv::Exception for invalid arguments, with a message that names the argument.
+*/
+CV_EXPORTS Mat findEssentialMatIter(InputArray points1, InputArray points2, InputArray cameraMatrix,
+                                    int method = RANSAC, double prob = 0.999,
+                                    double threshold = 1.0, int maxIters = 1000,
+                                    OutputArray mask = noArray());
+
+/** @overload Same as above with maxIters = 1000 (OpenCV's older form). */
+CV_EXPORTS Mat findEssentialMatIter(InputArray points1, InputArray points2, InputArray cameraMatrix,
+                                    int method, double prob, double threshold, OutputArray mask);
+
+/** @overload The camera matrix is [focal 0 pp.x; 0 focal pp.y; 0 0 1]. */
+CV_EXPORTS Mat findEssentialMatIter(InputArray points1, InputArray points2, double focal = 1.0,
+                                    Point2d pp = Point2d(0, 0), int method = RANSAC,
+                                    double prob = 0.999, double threshold = 1.0,
+                                    int maxIters = 1000, OutputArray mask = noArray());
+
+/** @overload Focal/principal-point form with maxIters = 1000 (OpenCV's older form). */
+CV_EXPORTS Mat findEssentialMatIter(InputArray points1, InputArray points2, double focal,
+                                    Point2d pp, int method, double prob, double threshold,
+                                    OutputArray mask);
+
+/** @overload Two cameras, each with its own distortion.
+
+As in OpenCV, the points are undistorted with their own camera, then mapped through the mean of the
+two camera matrices, whose focal lengths also convert the pixel threshold.
+*/
+CV_EXPORTS Mat findEssentialMatIter(InputArray points1, InputArray points2,
+                                    InputArray cameraMatrix1, InputArray distCoeffs1,
+                                    InputArray cameraMatrix2, InputArray distCoeffs2,
+                                    int method = RANSAC, double prob = 0.999,
+                                    double threshold = 1.0, OutputArray mask = noArray());
+
+/** @overload UsacParams form.
+
+Honoured: `confidence`, `threshold`, `maxIterations`, `randomGeneratorState`. The sampler, score,
+local optimisation and neighbourhood fields do not change the engine yet (it is always uniform
+sampling with MSAC scoring and a final IRLS refinement).
+*/
+CV_EXPORTS Mat findEssentialMatIter(InputArray points1, InputArray points2,
+                                    InputArray cameraMatrix1, InputArray cameraMatrix2,
+                                    InputArray distCoeffs1, InputArray distCoeffs2, OutputArray mask,
+                                    const UsacParams& params);
+
+/** @brief The module's own overload: every setting, and an optional report.
+
+@param points1 points of the first image (as above).
+@param points2 points of the second image (as above).
+@param cameraMatrix 3 x 3 intrinsic matrix of both cameras.
+@param params solver, scoring, confidence, threshold, iteration cap, seed, refinement.
+@param mask output N x 1 CV_8U inlier mask, as above.
+@param report if not null, filled with R, t, counts and timings.
+@return E (3 x 3 CV_64F; 3n x 3 for exactly five points), or an empty Mat on failure.
+*/
+CV_EXPORTS Mat findEssentialMatIter(InputArray points1, InputArray points2, InputArray cameraMatrix,
+                                    const EssentialParams& params, OutputArray mask = noArray(),
+                                    EssentialReport* report = nullptr);
+
+/** @brief Drop-in replacement for `cv::recoverPose(E, points1, points2, cameraMatrix, R, t, mask)`.
+
+Decomposes E by SVD into its two rotations and the translation direction, and chooses among the four
+(R, +-t) candidates the one that puts the most correspondences in front of both cameras. Unlike
+OpenCV 4.6, which ignores points farther than 50 baselines (so that in a deep scene seen from a short
+baseline no point counts and the sign of t is arbitrary), every point with positive depth in both
+views counts.
+
+@param E essential matrix, 3 x 3.
+@param points1 points of the first image (layouts as findEssentialMatIter()).
+@param points2 points of the second image.
+@param cameraMatrix 3 x 3 intrinsic matrix.
+@param R output 3 x 3 CV_64F rotation from view 1 to view 2.
+@param t output 3 x 1 CV_64F unit translation.
+@param mask in/out: if given, only its non-zero points are used, and on return it marks the points
+used that lie in front of both cameras for the chosen pose.
+@return the number of (masked) points in front of both cameras.
+*/
+CV_EXPORTS int recoverPose(InputArray E, InputArray points1, InputArray points2,
+                           InputArray cameraMatrix, OutputArray R, OutputArray t,
+                           InputOutputArray mask = noArray());
+
+/** @overload The camera matrix is [focal 0 pp.x; 0 focal pp.y; 0 0 1]. */
+CV_EXPORTS int recoverPose(InputArray E, InputArray points1, InputArray points2, OutputArray R,
+                           OutputArray t, double focal = 1.0, Point2d pp = Point2d(0, 0),
+                           InputOutputArray mask = noArray());
+
+//! @}
+
+} // namespace essential
+} // namespace cv
+
+#endif // OPENCV_ESSENTIAL_HPP

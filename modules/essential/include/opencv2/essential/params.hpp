@@ -1,0 +1,85 @@
+// This file is part of opencv_essential, licensed under the Apache License, Version 2.0.
+// See the LICENSE file at the top of the source tree.
+
+#ifndef OPENCV_ESSENTIAL_PARAMS_HPP
+#define OPENCV_ESSENTIAL_PARAMS_HPP
+
+#include <opencv2/calib3d.hpp>
+#include <opencv2/core.hpp>
+
+#include <string>
+
+namespace cv {
+namespace essential {
+
+//! @addtogroup essential
+//! @{
+
+/** @brief Settings of one essential-matrix estimate (the module's own overload of
+findEssentialMatIter()).
+
+The defaults are those of the drop-in overloads, which behave like `cv::findEssentialMat` with
+`method = RANSAC`, `prob = 0.999`, `threshold = 1.0`, `maxIters = 1000`.
+*/
+struct CV_EXPORTS EssentialParams
+{
+    /** Name of a registered solver (see listSolvers()). */
+    std::string solver = "gn";
+
+    /** Scoring: `cv::RANSAC` (adaptive MSAC, truncated Sampson error) or `cv::LMEDS` (least median
+    of squared Sampson errors; the threshold is then derived from the data, as OpenCV does). */
+    int method = RANSAC;
+
+    /** Required probability, in (0, 1), that at least one sample was outlier-free and solved. */
+    double confidence = 0.999;
+
+    /** Inlier threshold in pixels on the Sampson distance, with pixels converted to normalised
+    units by the mean focal length (fx + fy) / 2, exactly as `cv::findEssentialMat`. Must be > 0. */
+    double threshold = 1.0;
+
+    /** Cap on the number of samples drawn (RANSAC iterations). Must be > 0. */
+    int maxIters = 1000;
+
+    /** Seed of the random generator: the same seed and input give the same result. */
+    uint64 seed = 0x6573736e7469616cULL;
+
+    /** Refine the best hypothesis on all points by iteratively reweighted least squares (IRLS) with
+    Levenberg-Marquardt in the 5-DOF parameterisation, then recompute the inlier mask. */
+    bool refine = true;
+
+    /** When a report is requested: also decompose E into R and t (with the cheirality test of
+    recoverPose()) and store them in the report. */
+    bool recoverPose = true;
+};
+
+/** @brief What one estimate did: the pose, the counts and the time spent per stage. */
+struct CV_EXPORTS EssentialReport
+{
+    bool success = false;  //!< an essential matrix was found
+    Matx33d E = Matx33d::zeros(); //!< the returned essential matrix (Frobenius norm sqrt(2))
+    Matx33d R = Matx33d::eye();   //!< rotation from view 1 to view 2 (if poseRecovered)
+    Vec3d t = Vec3d(0, 0, 0);     //!< unit translation, X2 = R X1 + s t (if poseRecovered)
+    bool poseRecovered = false;   //!< R and t were computed
+    int pointsInFront = 0;        //!< inliers in front of both cameras for (R, t)
+
+    int numPoints = 0;            //!< correspondences given
+    int inliers = 0;              //!< non-zero entries of the returned mask
+    int iterations = 0;           //!< samples drawn (RANSAC iterations)
+    int hypothesesGenerated = 0;  //!< solver calls made (one per sample)
+    int hypothesesConverged = 0;  //!< essential matrices the solver returned
+    int hypothesesScored = 0;     //!< essential matrices scored against the data
+    int refineIterations = 0;     //!< IRLS iterations of the final refinement
+
+    double timeSetupMs = 0;   //!< input checks and normalisation
+    double timeSearchMs = 0;  //!< sampling, solving and scoring
+    double timeRefineMs = 0;  //!< final IRLS refinement and mask
+    double timePoseMs = 0;    //!< decomposition into R and t
+    double timeTotalMs = 0;   //!< the whole call
+};
+
+//! @}
+
+} // namespace essential
+} // namespace cv
+
+#endif // OPENCV_ESSENTIAL_PARAMS_HPP

@@ -1,0 +1,86 @@
+// This file is part of opencv_essential, licensed under the Apache License, Version 2.0.
+// See the LICENSE file at the top of the source tree.
+
+#ifndef OPENCV_ESSENTIAL_SOLVER_HPP
+#define OPENCV_ESSENTIAL_SOLVER_HPP
+
+#include <opencv2/core.hpp>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace cv {
+namespace essential {
+
+//! @addtogroup essential
+//! @{
+
+/** @brief A hypothesis generator: turns a sample of normalised correspondences into 0..k essential
+matrices.
+
+Solvers know nothing of RANSAC. The engine draws `sampleSize()` correspondences, calls `solve()`,
+and scores whatever comes back. Coordinates are normalised image coordinates (the camera matrix
+already removed, the homogeneous coordinate 1 implied), so that a correspondence satisfies
+\f$[x_2\ y_2\ 1]\, E\, [x_1\ y_1\ 1]^T = 0\f$ for the true essential matrix \f$E\f$.
+
+One engine owns one solver instance for the duration of one estimate, so an implementation may keep
+mutable workspace in its members; it must not allocate inside `solve()` if it wants to be fast.
+
+To add a solver, derive from this class and register a factory with registerSolver().
+*/
+class CV_EXPORTS EssentialSolver
+{
+public:
+    virtual ~EssentialSolver();
+
+    /** Number of correspondences in one sample (5 for a minimal solver). */
+    virtual int sampleSize() const = 0;
+
+    /** Upper bound on the number of essential matrices one call of solve() may return. */
+    virtual int maxSolutions() const = 0;
+
+    /** @brief Estimates essential matrices from one sample.
+
+    @param x1 `sampleSize()` normalised points in the first view.
+    @param x2 the corresponding `sampleSize()` normalised points in the second view.
+    @param rng random source, for solvers that start from random initial values.
+    @param solutions room for `maxSolutions()` matrices; the first n are written.
+    @return n, the number of essential matrices written (0 when the solver gives up).
+    */
+    virtual int solve(const Point2d* x1, const Point2d* x2, RNG& rng, Matx33d* solutions) = 0;
+
+    /** @brief Probability that one call on an outlier-free sample returns the true model.
+
+    A direct solver returns 1. An iterative solver that starts from a random point converges to the
+    true solution only part of the time; the engine divides by this rate when it computes how many
+    samples the requested confidence needs. The default is 1.
+    */
+    virtual double successRate() const { return 1.0; }
+};
+
+/** A function that makes a new, independent solver instance. */
+typedef std::function<Ptr<EssentialSolver>()> EssentialSolverFactory;
+
+/** @brief Registers (or replaces) the solver called `name`.
+
+Thread-safe. The built-in solvers are `"gn"` (Gauss-Newton on a minimal set, Rosten et al.
+Algorithm 2) and `"lm"` (Levenberg-Marquardt on a minimal set, Algorithm 1).
+@throws cv::Exception (StsBadArg) if `name` is empty or `factory` is empty.
+*/
+CV_EXPORTS void registerSolver(const std::string& name, const EssentialSolverFactory& factory);
+
+/** @brief Makes a new instance of the solver registered as `name`.
+@throws cv::Exception (StsBadArg) naming the unknown solver and the known ones.
+*/
+CV_EXPORTS Ptr<EssentialSolver> createSolver(const std::string& name);
+
+/** The names of all registered solvers, sorted. */
+CV_EXPORTS std::vector<std::string> listSolvers();
+
+//! @}
+
+} // namespace essential
+} // namespace cv
+
+#endif // OPENCV_ESSENTIAL_SOLVER_HPP

@@ -1,0 +1,323 @@
+// This file is part of opencv_essential, licensed under the Apache License, Version 2.0.
+// See the LICENSE file at the top of the source tree.
+
+// The public findEssentialMatIter overloads: each turns its arguments into normalised
+// correspondences and a normalised threshold, then runs the one pipeline below:
+// search (MSAC or LMedS over the registered solver) -> IRLS refinement -> mask -> optional pose.
+
+#include "opencv2/essential.hpp"
+
+#include "geometry/essential_decomposition.hpp"
+#include "pose/pose_recovery.hpp"
+#include "problem.hpp"
+#include "ransac/msac_score.hpp"
+#include "ransac/search.hpp"
+#include "refine/irls_refinement.hpp"
+
+#include <opencv2/calib3d.hpp>
+
+#include <cmath>
+#include <vector>
+
+namespace cv {
+namespace essential {
+
+namespace {
+
+double msSince(int64 start)
+{
+    return double(getTickCount() - start) * 1000.0 / getTickFrequency();
+}
+
+void writeMask(OutputArray mask, const std::vector<uchar>& values)
+{
+    if (!mask.needed()) return;
+    mask.create(static_cast<int>(values.size()), 1, CV_8U);
+    Mat m = mask.getMat();
+    if (!values.empty()) std::copy(values.begin(), values.end(), m.ptr<uchar>());
+}
+
+Mat toMat(const Matx33d& E)
+{
+    return Mat(E, true);
+}
+
+/** Iterative solvers return one solution per call, from a random start; to list the solutions of
+a five-point problem (what cv::findEssentialMat returns for exactly five points) they are restarted
+this many times and the distinct results kept. Measured on noise-free random problems: with gn the
+set of distinct solutions stops growing after about 30 starts, and 60 leaves margin. */
+constexpr int kFivePointStarts = 60;
+
+/** Two solutions closer than this (essential matrices of norm sqrt(2), up to sign) are the same
+root: converged solutions agree to ~1e-10, distinct roots differ by far more than 1e-6. */
+constexpr double kSameSolution = 1e-6;
+
+Mat solveExactlyFive(const Problem& problem, EssentialSolver& solver, RNG& rng,
+                     EssentialReport* report)
+{
+    const int starts = solver.successRate() >= 1.0 ? 1 : kFivePointStarts;
+    std::vector<Matx33d> buffer(static_cast<size_t>(solver.maxSolutions()));
+    std::vector<Eigen::Matrix3d> found;
+    const int k = solver.sampleSize();
+    for (int s = 0; s < starts; ++s) {
+        const int count = solver.solve(problem.p1.data(), problem.p2.data(), rng, buffer.data());
+        if (report) {
+            ++report->hypothesesGenerated;
+            report->hypothesesConverged += std::max(0, count);
+        }
+        for (int h = 0; h < std::min(count, static_cast<int>(buffer.size())); ++h) {
+            Eigen::Matrix3d E;
+            for (int i = 0; i < 3; ++i)
+                for (int j = 0; j < 3; ++j) E(i, j) = buffer[h](i, j);
+            if (!E.allFinite() || !(E.norm() > 0)) continue;
+            const Eigen::Matrix3d C = geometry::canonicalEssential(E);
+            bool seen = false;
+            for (const Eigen::Matrix3d& F : found) seen |= (C - F).norm() < kSameSolution;
+            if (!seen && found.size() < 10) found.push_back(C);
+        }
+    }
+    (void)k;
+    if (found.empty()) return Mat();
+    Mat stacked(3 * static_cast<int>(found.size()), 3, CV_64F);
+    for (size_t s = 0; s < found.size(); ++s)
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) stacked.at<double>(3 * static_cast<int>(s) + i, j) = found[s](i, j);
+    return stacked;
+}
+
+/** The pipeline shared by every overload. `problem` holds normalised points and threshold. */
+Mat estimate(const Problem& problem, const EssentialParams& params, OutputArray mask,
+             EssentialReport* report, int64 start)
+{
+    const int n = problem.size();
+    EssentialReport local;
+    EssentialReport& rep = report ? *report : local;
+    rep = EssentialReport();
+    rep.numPoints = n;
+    rep.timeSetupMs = msSince(start);
+
+    Ptr<EssentialSolver> solver = createSolver(params.solver);
+    if (n < solver->sampleSize())
+        CV_Error(Error::StsBadArg, "solver '" + params.solver + "' needs at least " +
+                                       std::to_string(solver->sampleSize()) +
+                                       " correspondences, got " + std::to_string(n));
+    RNG rng(params.seed);
+    std::vector<uchar> inliers(static_cast<size_t>(n), 0);
+
+    // Exactly a minimal set: return every distinct solution, stacked, as OpenCV does.
+    if (n == solver->sampleSize() && n == 5) {
+        const int64 t0 = getTickCount();
+        Mat stacked = solveExactlyFive(problem, *solver, rng, &rep);
+        rep.timeSearchMs = msSince(t0);
+        if (!stacked.empty()) std::fill(inliers.begin(), inliers.end(), uchar(1));
+        rep.success = !stacked.empty();
+        rep.inliers = rep.success ? n : 0;
+        if (rep.success) {
+            for (int i = 0; i < 3; ++i)
+                for (int j = 0; j < 3; ++j) rep.E(i, j) = stacked.at<double>(i, j);
+        }
+        writeMask(mask, inliers);
+        rep.timeTotalMs = msSince(start);
+        return stacked;
+    }
+
+    const int64 tSearch = getTickCount();
+    ransac::SearchSettings settings;
+    settings.confidence = params.confidence;
+    settings.maxIters = params.maxIters;
+    const ransac::SearchResult found = params.method == LMEDS
+                                           ? ransac::searchLmeds(problem, *solver, rng, settings)
+                                           : ransac::searchMsac(problem, *solver, rng, settings);
+    rep.iterations = found.iterations;
+    rep.hypothesesGenerated = found.hypothesesGenerated;
+    rep.hypothesesConverged = found.hypothesesConverged;
+    rep.hypothesesScored = found.hypothesesScored;
+    rep.timeSearchMs = msSince(tSearch);
+    if (!found.found) {
+        writeMask(mask, inliers);
+        rep.timeTotalMs = msSince(start);
+        return Mat();
+    }
+
+    const int64 tRefine = getTickCount();
+    Matx33d E = found.E;
+    if (params.refine) {
+        const refine::IrlsResult refined = refine::refineIrls(problem, found.E, found.threshold);
+        rep.refineIterations = refined.iterations;
+        if (refined.improved) {
+            // The refinement minimises a smooth robust loss, not the truncated MSAC cost; keep it
+            // unless it is clearly worse on the MSAC cost (5% slack for the difference of the two
+            // losses), which guards against a refinement pulled away by structured outliers.
+            Problem scored = problem; // threshold of the search (differs for LMedS)
+            scored.threshold = found.threshold;
+            const double before = ransac::scoreMsac(found.E, scored).cost;
+            const double after = ransac::scoreMsac(refined.E, scored).cost;
+            if (after <= 1.05 * before) E = refined.E;
+        }
+    }
+    rep.inliers = ransac::inlierMask(E, problem, found.threshold, inliers.data());
+    rep.timeRefineMs = msSince(tRefine);
+    if (rep.inliers < 5) {
+        std::fill(inliers.begin(), inliers.end(), uchar(0));
+        rep.inliers = 0;
+        writeMask(mask, inliers);
+        rep.timeTotalMs = msSince(start);
+        return Mat();
+    }
+    rep.success = true;
+    rep.E = E;
+
+    if (report && params.recoverPose) {
+        const int64 tPose = getTickCount();
+        pose::PoseResult pr;
+        if (pose::recoverPoseNormalised(E, problem.p1.data(), problem.p2.data(), n,
+                                        inliers.data(), nullptr, pr)) {
+            rep.R = pr.R;
+            rep.t = pr.t;
+            rep.pointsInFront = pr.inFront;
+            rep.poseRecovered = true;
+        }
+        rep.timePoseMs = msSince(tPose);
+    }
+    writeMask(mask, inliers);
+    rep.timeTotalMs = msSince(start);
+    return toMat(E);
+}
+
+/** The drop-in overloads' settings from OpenCV's arguments. */
+EssentialParams dropInParams(int method, double prob, double threshold, int maxIters)
+{
+    checkMethod(method);
+    checkConfidence(prob);
+    if (method != LMEDS) checkThreshold(threshold);
+    checkMaxIters(maxIters);
+    EssentialParams p;
+    p.method = method == LMEDS ? LMEDS : RANSAC;
+    p.confidence = prob;
+    p.threshold = method == LMEDS ? 1.0 : threshold;
+    p.maxIters = maxIters;
+    return p;
+}
+
+Mat estimateWithCamera(InputArray points1, InputArray points2, const Matx33d& K,
+                       const EssentialParams& params, OutputArray mask, EssentialReport* report,
+                       int64 start)
+{
+    std::vector<Point2d> p1 = readPoints(points1, "points1");
+    std::vector<Point2d> p2 = readPoints(points2, "points2");
+    checkPointSets(p1, p2, 5);
+    const double meanFocal = 0.5 * (std::abs(K(0, 0)) + std::abs(K(1, 1)));
+    Problem problem = makeProblem(normalisePoints(p1, K), normalisePoints(p2, K),
+                                  params.threshold / meanFocal);
+    return estimate(problem, params, mask, report, start);
+}
+
+void checkDistortion(InputArray d, const char* name)
+{
+    if (d.empty()) return;
+    Mat m = d.getMat();
+    const size_t total = m.total() * static_cast<size_t>(m.channels());
+    if (m.depth() != CV_32F && m.depth() != CV_64F)
+        CV_Error(Error::StsBadArg, std::string(name) + " must be CV_32F or CV_64F");
+    if (total != 4 && total != 5 && total != 8 && total != 12 && total != 14)
+        CV_Error(Error::StsBadArg, std::string(name) +
+                                       " must have 4, 5, 8, 12 or 14 coefficients (got " +
+                                       std::to_string(total) + ")");
+    Mat d64;
+    m.convertTo(d64, CV_64F);
+    if (!checkRange(d64)) CV_Error(Error::StsBadArg, std::string(name) + " has a non-finite entry");
+}
+
+/** The two-camera forms: each view undistorted and normalised with its own camera; the pixel
+threshold converted with the mean focal length of the two cameras, as OpenCV does. */
+Mat estimateTwoCameras(InputArray points1, InputArray points2, InputArray cameraMatrix1,
+                       InputArray distCoeffs1, InputArray cameraMatrix2, InputArray distCoeffs2,
+                       const EssentialParams& params, OutputArray mask, int64 start)
+{
+    std::vector<Point2d> p1 = readPoints(points1, "points1");
+    std::vector<Point2d> p2 = readPoints(points2, "points2");
+    checkPointSets(p1, p2, 5);
+    const Matx33d K1 = readCameraMatrix(cameraMatrix1, "cameraMatrix1");
+    const Matx33d K2 = readCameraMatrix(cameraMatrix2, "cameraMatrix2");
+    checkDistortion(distCoeffs1, "distCoeffs1");
+    checkDistortion(distCoeffs2, "distCoeffs2");
+    std::vector<Point2d> n1, n2;
+    undistortPoints(p1, n1, K1, distCoeffs1);
+    undistortPoints(p2, n2, K2, distCoeffs2);
+    const double meanFocal =
+        0.25 * (std::abs(K1(0, 0)) + std::abs(K1(1, 1)) + std::abs(K2(0, 0)) + std::abs(K2(1, 1)));
+    Problem problem = makeProblem(std::move(n1), std::move(n2), params.threshold / meanFocal);
+    return estimate(problem, params, mask, nullptr, start);
+}
+
+} // namespace
+
+Mat findEssentialMatIter(InputArray points1, InputArray points2, InputArray cameraMatrix,
+                         int method, double prob, double threshold, int maxIters, OutputArray mask)
+{
+    const int64 start = getTickCount();
+    const EssentialParams params = dropInParams(method, prob, threshold, maxIters);
+    const Matx33d K = readCameraMatrix(cameraMatrix, "cameraMatrix");
+    return estimateWithCamera(points1, points2, K, params, mask, nullptr, start);
+}
+
+Mat findEssentialMatIter(InputArray points1, InputArray points2, InputArray cameraMatrix,
+                         int method, double prob, double threshold, OutputArray mask)
+{
+    return findEssentialMatIter(points1, points2, cameraMatrix, method, prob, threshold, 1000,
+                                mask);
+}
+
+Mat findEssentialMatIter(InputArray points1, InputArray points2, double focal, Point2d pp,
+                         int method, double prob, double threshold, int maxIters, OutputArray mask)
+{
+    const int64 start = getTickCount();
+    const EssentialParams params = dropInParams(method, prob, threshold, maxIters);
+    return estimateWithCamera(points1, points2, cameraFromFocal(focal, pp), params, mask, nullptr,
+                              start);
+}
+
+Mat findEssentialMatIter(InputArray points1, InputArray points2, double focal, Point2d pp,
+                         int method, double prob, double threshold, OutputArray mask)
+{
+    return findEssentialMatIter(points1, points2, focal, pp, method, prob, threshold, 1000, mask);
+}
+
+Mat findEssentialMatIter(InputArray points1, InputArray points2, InputArray cameraMatrix1,
+                         InputArray distCoeffs1, InputArray cameraMatrix2, InputArray distCoeffs2,
+                         int method, double prob, double threshold, OutputArray mask)
+{
+    const int64 start = getTickCount();
+    const EssentialParams params = dropInParams(method, prob, threshold, 1000);
+    return estimateTwoCameras(points1, points2, cameraMatrix1, distCoeffs1, cameraMatrix2,
+                              distCoeffs2, params, mask, start);
+}
+
+Mat findEssentialMatIter(InputArray points1, InputArray points2, InputArray cameraMatrix1,
+                         InputArray cameraMatrix2, InputArray distCoeffs1, InputArray distCoeffs2,
+                         OutputArray mask, const UsacParams& usac)
+{
+    const int64 start = getTickCount();
+    EssentialParams params = dropInParams(RANSAC, usac.confidence, usac.threshold,
+                                          usac.maxIterations);
+    params.seed = static_cast<uint64>(static_cast<unsigned>(usac.randomGeneratorState));
+    return estimateTwoCameras(points1, points2, cameraMatrix1, distCoeffs1, cameraMatrix2,
+                              distCoeffs2, params, mask, start);
+}
+
+Mat findEssentialMatIter(InputArray points1, InputArray points2, InputArray cameraMatrix,
+                         const EssentialParams& params, OutputArray mask, EssentialReport* report)
+{
+    const int64 start = getTickCount();
+    if (params.method != RANSAC && params.method != LMEDS)
+        CV_Error(Error::StsBadArg, "EssentialParams::method must be RANSAC or LMEDS, got " +
+                                       std::to_string(params.method));
+    checkConfidence(params.confidence);
+    checkThreshold(params.threshold);
+    checkMaxIters(params.maxIters);
+    const Matx33d K = readCameraMatrix(cameraMatrix, "cameraMatrix");
+    return estimateWithCamera(points1, points2, K, params, mask, report, start);
+}
+
+} // namespace essential
+} // namespace cv

@@ -1,0 +1,107 @@
+// This file is part of opencv_essential, licensed under the Apache License, Version 2.0.
+// See the LICENSE file at the top of the source tree.
+
+// The minimal 5-DOF parameterisation of an essential matrix of Rosten et al. (section 2):
+//   E = [t]x R,  t = Rt [1 0 0]^T,
+// R updated by left-multiplied exponential-map increments exp(d1 G1 + d2 G2 + d3 G3) R, Rt by
+// right-multiplied increments Rt exp(d4 G1 + d5 G2). The residual of a correspondence (q1, q2) is the
+// algebraic epipolar error r = q2^T E q1, and its derivatives are the paper's equations (3), (4).
+
+#ifndef OPENCV_ESSENTIAL_GEOMETRY_ESSENTIAL_PARAMETERISATION_HPP
+#define OPENCV_ESSENTIAL_GEOMETRY_ESSENTIAL_PARAMETERISATION_HPP
+
+#include "geometry/so3.hpp"
+
+#include <Eigen/Core>
+
+#include <cmath>
+
+namespace cv {
+namespace essential {
+namespace geometry {
+
+typedef Eigen::Matrix<double, 5, 1> Vector5d;
+typedef Eigen::Matrix<double, 5, 5> Matrix5d;
+
+/** A point of the essential manifold: a rotation R and a rotation Rt whose first column is the unit
+translation direction. */
+struct EssentialPose
+{
+    Eigen::Matrix3d R = Eigen::Matrix3d::Identity();
+    Eigen::Matrix3d Rt = Eigen::Matrix3d::Identity();
+
+    Eigen::Vector3d t() const { return Rt.col(0); }
+    Eigen::Matrix3d E() const { return skew(Rt.col(0)) * R; }
+
+    /** Moves along the manifold by the increment d (d1..d3 rotate R, d4, d5 turn t). */
+    void update(const Vector5d& d)
+    {
+        R = expGenerators(d[0], d[1], d[2]) * R;
+        Rt = Rt * expGenerators(d[3], d[4], 0.0);
+    }
+};
+
+/** A rotation whose first column is the unit vector t (any completion of the basis). */
+inline Eigen::Matrix3d rotationWithFirstColumn(const Eigen::Vector3d& t)
+{
+    const Eigen::Vector3d x = t.normalized();
+    // The axis of x's smallest component is the farthest from parallel to x.
+    int k = 0;
+    if (std::abs(x.y()) < std::abs(x[k])) k = 1;
+    if (std::abs(x.z()) < std::abs(x[k])) k = 2;
+    Eigen::Vector3d helper = Eigen::Vector3d::Zero();
+    helper[k] = 1.0;
+    const Eigen::Vector3d y = x.cross(helper).normalized();
+    Eigen::Matrix3d Rt;
+    Rt.col(0) = x;
+    Rt.col(1) = y;
+    Rt.col(2) = x.cross(y);
+    return Rt;
+}
+
+/** Per-model constants of the residual and its Jacobian, computed once per iteration so that the
+per-correspondence work below is a handful of multiply-adds. */
+struct ResidualFrame
+{
+    Eigen::Matrix3d R;
+    Eigen::Vector3d t, u, v; // columns of Rt: t and the two directions t may turn towards
+
+    explicit ResidualFrame(const EssentialPose& p)
+        : R(p.R), t(p.Rt.col(0)), u(p.Rt.col(1)), v(p.Rt.col(2))
+    {
+    }
+};
+
+/** Residual r = q2^T [t]x R q1 of one correspondence and its 5 derivatives.
+
+With a = R q1, c = a x q2 and b = q2 x t, r = t . c, and
+  dr/dd_k = q2^T [t]x G_k a = b . (G_k a)     (k = 1..3, equation 3)
+  dr/dd_4 = (Rt G1 e1) . c = -u . c,  dr/dd_5 = (Rt G2 e1) . c = -v . c   (equation 4)
+since G1 e1 = -e2 and G2 e1 = -e3. */
+inline double residualAndJacobian(const ResidualFrame& f, double x1, double y1, double x2,
+                                  double y2, double J[5])
+{
+    const Eigen::Vector3d a = f.R * Eigen::Vector3d(x1, y1, 1.0);
+    const Eigen::Vector3d q2(x2, y2, 1.0);
+    const Eigen::Vector3d c = a.cross(q2);
+    const Eigen::Vector3d b = q2.cross(f.t);
+    J[0] = b.x() * a.y() - b.y() * a.x();
+    J[1] = b.x() * a.z() - b.z() * a.x();
+    J[2] = b.y() * a.z() - b.z() * a.y();
+    J[3] = -f.u.dot(c);
+    J[4] = -f.v.dot(c);
+    return f.t.dot(c);
+}
+
+/** The algebraic residual alone, r = q2^T E q1. */
+inline double algebraicResidual(const Eigen::Matrix3d& E, double x1, double y1, double x2,
+                                double y2)
+{
+    return Eigen::Vector3d(x2, y2, 1.0).dot(E * Eigen::Vector3d(x1, y1, 1.0));
+}
+
+} // namespace geometry
+} // namespace essential
+} // namespace cv
+
+#endif

@@ -1,0 +1,38 @@
+// This file is part of opencv_essential, licensed under the Apache License, Version 2.0.
+// See the LICENSE file at the top of the source tree.
+
+// Relative pose from an essential matrix: the SVD decomposition's four (R, +-t) candidates and the
+// cheirality test that picks one, on normalised points.
+
+#ifndef OPENCV_ESSENTIAL_POSE_POSE_RECOVERY_HPP
+#define OPENCV_ESSENTIAL_POSE_POSE_RECOVERY_HPP
+
+#include <opencv2/core.hpp>
+
+namespace cv {
+namespace essential {
+namespace pose {
+
+struct PoseResult
+{
+    Matx33d R = Matx33d::eye();
+    Vec3d t = Vec3d(0, 0, 0);
+    int inFront = 0; //!< points (among those masked in) with positive depth in both views
+};
+
+/** Chooses among the four poses of E the one with the most points in front of both cameras.
+
+@param E essential matrix.
+@param x1, x2 n normalised correspondences.
+@param maskIn if not null, only points with maskIn[i] != 0 take part.
+@param maskOut if not null, set to 1 for the points that take part and lie in front of both cameras
+for the chosen pose, 0 otherwise (may alias maskIn).
+@return false if E cannot be decomposed (then `out` is untouched and maskOut is zeroed). */
+bool recoverPoseNormalised(const Matx33d& E, const Point2d* x1, const Point2d* x2, int n,
+                           const uchar* maskIn, uchar* maskOut, PoseResult& out);
+
+} // namespace pose
+} // namespace essential
+} // namespace cv
+
+#endif

@@ -1,0 +1,60 @@
+// This file is part of opencv_essential, licensed under the Apache License, Version 2.0.
+// See the LICENSE file at the top of the source tree.
+
+// Input checks and normalisation: from whatever the caller passed (OpenCV point layouts, camera
+// matrices, distortion) to a Problem of normalised correspondences the engine can work on.
+
+#ifndef OPENCV_ESSENTIAL_PROBLEM_HPP
+#define OPENCV_ESSENTIAL_PROBLEM_HPP
+
+#include <opencv2/core.hpp>
+
+#include <vector>
+
+namespace cv {
+namespace essential {
+
+/** Normalised correspondences in structure-of-arrays layout, so that scoring loops vectorise, plus
+the same points as Point2d arrays for the solvers' samples. */
+struct Problem
+{
+    std::vector<double> x1, y1, x2, y2;
+    std::vector<Point2d> p1, p2;
+    /** Inlier threshold on the Sampson distance, in normalised units. */
+    double threshold = 0.0;
+
+    int size() const { return static_cast<int>(x1.size()); }
+};
+
+/** Reads points in any OpenCV layout (vector<Point2f|Point2d>, N x 2 one-channel or N x 1
+two-channel Mat, CV_32F or CV_64F) into Point2d. `name` is used in error messages. Throws
+cv::Exception for an empty or wrongly shaped array, another depth, or non-finite coordinates. */
+std::vector<Point2d> readPoints(InputArray points, const char* name);
+
+/** Checks that the two point sets have the same size and at least `minPoints` points. */
+void checkPointSets(const std::vector<Point2d>& p1, const std::vector<Point2d>& p2,
+                    int minPoints);
+
+/** Reads a 3 x 3 camera matrix (CV_32F or CV_64F, finite, fx and fy non-zero, last row 0 0 1,
+invertible). */
+Matx33d readCameraMatrix(InputArray cameraMatrix, const char* name);
+
+/** The camera matrix of the focal/principal-point overloads; checks focal. */
+Matx33d cameraFromFocal(double focal, Point2d pp);
+
+/** Pixel points to normalised coordinates with K^-1 (skew included). */
+std::vector<Point2d> normalisePoints(const std::vector<Point2d>& pixels, const Matx33d& K);
+
+/** Builds the Problem from normalised points and a threshold already in normalised units. */
+Problem makeProblem(std::vector<Point2d> n1, std::vector<Point2d> n2, double threshold);
+
+/** Argument checks shared by every overload; messages name the argument. */
+void checkConfidence(double prob);
+void checkThreshold(double threshold);
+void checkMaxIters(int maxIters);
+void checkMethod(int method);
+
+} // namespace essential
+} // namespace cv
+
+#endif

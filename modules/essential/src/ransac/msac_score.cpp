@@ -1,0 +1,93 @@
+// This file is part of opencv_essential, licensed under the Apache License, Version 2.0.
+// See the LICENSE file at the top of the source tree.
+
+#include "ransac/msac_score.hpp"
+
+#include <algorithm>
+
+namespace cv {
+namespace essential {
+namespace ransac {
+
+namespace {
+
+/** Squared Sampson distances of points [begin, end) written to err. A loop over plain arrays with
+the nine entries of E in registers: the compiler vectorises it (two doubles per SSE2 lane pair,
+four with AVX). A point on both epipoles gives 0/0 = NaN, which never passes the `<` tests below,
+so it counts as an outlier at full truncated cost. */
+inline void sampsonBlock(const Matx33d& E, const double* x1, const double* y1, const double* x2,
+                         const double* y2, int begin, int end, double* err)
+{
+    const double e00 = E(0, 0), e01 = E(0, 1), e02 = E(0, 2);
+    const double e10 = E(1, 0), e11 = E(1, 1), e12 = E(1, 2);
+    const double e20 = E(2, 0), e21 = E(2, 1), e22 = E(2, 2);
+    for (int i = begin; i < end; ++i) {
+        const double a = e00 * x1[i] + e01 * y1[i] + e02;
+        const double b = e10 * x1[i] + e11 * y1[i] + e12;
+        const double c = e20 * x1[i] + e21 * y1[i] + e22;
+        const double d = e00 * x2[i] + e10 * y2[i] + e20;
+        const double e = e01 * x2[i] + e11 * y2[i] + e21;
+        const double r = x2[i] * a + y2[i] * b + c;
+        err[i - begin] = r * r / (a * a + b * b + d * d + e * e);
+    }
+}
+
+/** Block length of the partial scoring: long enough to vectorise and amortise the early-exit test,
+short enough that a losing hypothesis stops early and that the buffer stays on the stack. */
+constexpr int kBlock = 64;
+
+} // namespace
+
+Score scoreMsac(const Matx33d& E, const Problem& problem, double bestCost)
+{
+    const int n = problem.size();
+    const double t2 = problem.threshold * problem.threshold;
+    Score s;
+    s.cost = 0.0;
+    double err[kBlock];
+    for (int begin = 0; begin < n; begin += kBlock) {
+        const int end = std::min(n, begin + kBlock);
+        sampsonBlock(E, problem.x1.data(), problem.y1.data(), problem.x2.data(),
+                     problem.y2.data(), begin, end, err);
+        double cost = 0.0;
+        int inliers = 0;
+        for (int i = 0; i < end - begin; ++i) {
+            const bool in = err[i] <= t2;
+            cost += in ? err[i] : t2;
+            inliers += in;
+        }
+        s.cost += cost;
+        s.inliers += inliers;
+        if (s.cost >= bestCost) return s;
+    }
+    return s;
+}
+
+void sampsonErrors(const Matx33d& E, const Problem& problem, double* errors)
+{
+    sampsonBlock(E, problem.x1.data(), problem.y1.data(), problem.x2.data(), problem.y2.data(), 0,
+                 problem.size(), errors);
+}
+
+int inlierMask(const Matx33d& E, const Problem& problem, double threshold, uchar* mask)
+{
+    const int n = problem.size();
+    const double t2 = threshold * threshold;
+    double err[kBlock];
+    int count = 0;
+    for (int begin = 0; begin < n; begin += kBlock) {
+        const int end = std::min(n, begin + kBlock);
+        sampsonBlock(E, problem.x1.data(), problem.y1.data(), problem.x2.data(),
+                     problem.y2.data(), begin, end, err);
+        for (int i = 0; i < end - begin; ++i) {
+            const bool in = err[i] <= t2;
+            mask[begin + i] = in ? 1 : 0;
+            count += in;
+        }
+    }
+    return count;
+}
+
+} // namespace ransac
+} // namespace essential
+} // namespace cv

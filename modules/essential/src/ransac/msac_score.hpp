@@ -1,0 +1,39 @@
+// This file is part of opencv_essential, licensed under the Apache License, Version 2.0.
+// See the LICENSE file at the top of the source tree.
+
+// MSAC scoring: the sum over all points of the squared Sampson distance truncated at the squared
+// threshold (Torr and Zisserman). Lower is better; an inlier is a point under the threshold.
+
+#ifndef OPENCV_ESSENTIAL_RANSAC_MSAC_SCORE_HPP
+#define OPENCV_ESSENTIAL_RANSAC_MSAC_SCORE_HPP
+
+#include "problem.hpp"
+
+#include <opencv2/core.hpp>
+
+namespace cv {
+namespace essential {
+namespace ransac {
+
+struct Score
+{
+    double cost = HUGE_VAL; //!< truncated sum of squared Sampson distances
+    int inliers = 0;        //!< points with squared Sampson distance at most threshold^2 (as OpenCV)
+};
+
+/** Scores E on all points. Gives up (returning a cost >= bestCost) as soon as the partial cost
+reaches bestCost: a hypothesis that cannot win needs no exact score. */
+Score scoreMsac(const Matx33d& E, const Problem& problem, double bestCost = HUGE_VAL);
+
+/** Squared Sampson distance of every point to E (for LMedS and masks). */
+void sampsonErrors(const Matx33d& E, const Problem& problem, double* errors);
+
+/** Writes mask[i] = 1 for the points whose Sampson distance is at most the threshold, 0 otherwise;
+returns the number of inliers. */
+int inlierMask(const Matx33d& E, const Problem& problem, double threshold, uchar* mask);
+
+} // namespace ransac
+} // namespace essential
+} // namespace cv
+
+#endif

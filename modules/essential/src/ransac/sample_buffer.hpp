@@ -1,0 +1,50 @@
+// This file is part of opencv_essential, licensed under the Apache License, Version 2.0.
+// See the LICENSE file at the top of the source tree.
+
+#ifndef OPENCV_ESSENTIAL_RANSAC_SAMPLE_BUFFER_HPP
+#define OPENCV_ESSENTIAL_RANSAC_SAMPLE_BUFFER_HPP
+
+#include "opencv2/essential/solver.hpp"
+#include "problem.hpp"
+#include "ransac/uniform_sampler.hpp"
+
+#include <vector>
+
+namespace cv {
+namespace essential {
+namespace ransac {
+
+/** The storage of one search loop, allocated once before it so the loop itself allocates nothing:
+sample indices, the sampled points and room for the solver's solutions. */
+struct SampleBuffer
+{
+    int sampleSize;
+    std::vector<int> indices;
+    std::vector<Point2d> x1, x2;
+    std::vector<Matx33d> solutions;
+
+    explicit SampleBuffer(const EssentialSolver& solver)
+        : sampleSize(solver.sampleSize()), indices(static_cast<size_t>(sampleSize)),
+          x1(static_cast<size_t>(sampleSize)), x2(static_cast<size_t>(sampleSize)),
+          solutions(static_cast<size_t>(solver.maxSolutions()))
+    {
+    }
+
+    /** Draws a uniform sample and runs the solver on it; returns the number of solutions. */
+    int drawAndSolve(const Problem& problem, EssentialSolver& solver, RNG& rng)
+    {
+        drawUniformSample(rng, problem.size(), sampleSize, indices.data());
+        for (int i = 0; i < sampleSize; ++i) {
+            x1[i] = problem.p1[indices[i]];
+            x2[i] = problem.p2[indices[i]];
+        }
+        const int count = solver.solve(x1.data(), x2.data(), rng, solutions.data());
+        return std::max(0, std::min(count, static_cast<int>(solutions.size())));
+    }
+};
+
+} // namespace ransac
+} // namespace essential
+} // namespace cv
+
+#endif

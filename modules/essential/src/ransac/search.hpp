@@ -1,0 +1,53 @@
+// This file is part of opencv_essential, licensed under the Apache License, Version 2.0.
+// See the LICENSE file at the top of the source tree.
+
+// The hypothesise-and-verify loops: adaptive MSAC and least median of squares (LMedS). Both draw
+// uniform samples, ask the solver for hypotheses and keep the best by their score; they know the
+// solver only through the EssentialSolver interface.
+
+#ifndef OPENCV_ESSENTIAL_RANSAC_SEARCH_HPP
+#define OPENCV_ESSENTIAL_RANSAC_SEARCH_HPP
+
+#include "opencv2/essential/solver.hpp"
+#include "problem.hpp"
+
+namespace cv {
+namespace essential {
+namespace ransac {
+
+struct SearchSettings
+{
+    double confidence = 0.999;
+    int maxIters = 1000;
+};
+
+struct SearchResult
+{
+    bool found = false;
+    Matx33d E;
+    /** Threshold (normalised units) that defines the inliers of E: the problem's for MSAC, the
+    data-derived one for LMedS. */
+    double threshold = 0.0;
+    int inliers = 0;
+    int iterations = 0;          //!< samples drawn
+    int hypothesesGenerated = 0; //!< solver calls
+    int hypothesesConverged = 0; //!< matrices returned by the solver
+    int hypothesesScored = 0;    //!< matrices scored
+};
+
+/** Adaptive MSAC: stops when the samples drawn reach requiredIterations() for the best inlier ratio
+so far (with the solver's success rate), or maxIters. A result needs at least sampleSize inliers. */
+SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rng,
+                        const SearchSettings& settings);
+
+/** LMedS as cv::findEssentialMat's LMEDS: a fixed number of samples for an assumed outlier ratio of
+0.45, the hypothesis with the least median squared Sampson error wins, and the inlier threshold is
+2.5 * 1.4826 * (1 + 5 / (N - 5)) * sqrt(median). */
+SearchResult searchLmeds(const Problem& problem, EssentialSolver& solver, RNG& rng,
+                         const SearchSettings& settings);
+
+} // namespace ransac
+} // namespace essential
+} // namespace cv
+
+#endif

@@ -1,0 +1,63 @@
+// This file is part of opencv_essential, licensed under the Apache License, Version 2.0.
+// See the LICENSE file at the top of the source tree.
+
+#include "ransac/msac_score.hpp"
+#include "ransac/sample_buffer.hpp"
+#include "ransac/search.hpp"
+#include "ransac/termination.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace cv {
+namespace essential {
+namespace ransac {
+
+SearchResult searchLmeds(const Problem& problem, EssentialSolver& solver, RNG& rng,
+                         const SearchSettings& settings)
+{
+    SearchResult result;
+    const int n = problem.size();
+    SampleBuffer buffer(solver);
+    if (n < buffer.sampleSize) return result;
+
+    // OpenCV's LMeDS assumes 45% outliers to fix the number of samples (at least 3).
+    const double assumedInlierRatio = 0.55;
+    const int samples = std::max(
+        3, requiredIterations(settings.confidence, assumedInlierRatio, buffer.sampleSize,
+                              solver.successRate(), settings.maxIters));
+    std::vector<double> errors(static_cast<size_t>(n));
+    double bestMedian = HUGE_VAL;
+    for (; result.iterations < samples; ++result.iterations) {
+        const int count = buffer.drawAndSolve(problem, solver, rng);
+        ++result.hypothesesGenerated;
+        result.hypothesesConverged += count;
+        for (int h = 0; h < count; ++h) {
+            ++result.hypothesesScored;
+            sampsonErrors(buffer.solutions[h], problem, errors.data());
+            for (double& e : errors)
+                if (std::isnan(e)) e = HUGE_VAL;
+            std::nth_element(errors.begin(), errors.begin() + n / 2, errors.end());
+            const double median = errors[static_cast<size_t>(n / 2)];
+            if (median < bestMedian) {
+                bestMedian = median;
+                result.E = buffer.solutions[h];
+                result.found = true;
+            }
+        }
+    }
+    if (!result.found) return result;
+    const double sigma =
+        2.5 * 1.4826 * (1.0 + 5.0 / (n - buffer.sampleSize)) * std::sqrt(bestMedian);
+    // A perfect fit (noise-free data) would give a zero threshold and no inliers; keep a floor at
+    // the round-off level of normalised coordinates.
+    result.threshold = std::max(sigma, 1e-10);
+    std::vector<uchar> mask(static_cast<size_t>(n));
+    result.inliers = inlierMask(result.E, problem, result.threshold, mask.data());
+    return result;
+}
+
+} // namespace ransac
+} // namespace essential
+} // namespace cv

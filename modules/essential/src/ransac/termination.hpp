@@ -1,0 +1,36 @@
+// This file is part of opencv_essential, licensed under the Apache License, Version 2.0.
+// See the LICENSE file at the top of the source tree.
+
+#ifndef OPENCV_ESSENTIAL_RANSAC_TERMINATION_HPP
+#define OPENCV_ESSENTIAL_RANSAC_TERMINATION_HPP
+
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+
+namespace cv {
+namespace essential {
+namespace ransac {
+
+/** Samples needed so that, with probability `confidence`, at least one sample of `sampleSize`
+points was all inliers (inlier ratio `inlierRatio`) and the solver solved it (probability
+`solverSuccess` for an outlier-free sample): log(1 - p) / log(1 - s w^k), capped at maxIters. */
+inline int requiredIterations(double confidence, double inlierRatio, int sampleSize,
+                              double solverSuccess, int maxIters)
+{
+    const double good = solverSuccess * std::pow(std::min(std::max(inlierRatio, 0.0), 1.0),
+                                                 sampleSize);
+    if (good <= 0.0) return maxIters;
+    if (good >= 1.0) return 1;
+    const double num = std::log(std::max(1.0 - confidence, DBL_MIN));
+    const double den = std::log1p(-good);
+    if (!(den < 0.0)) return maxIters;
+    const double needed = std::ceil(num / den);
+    return needed >= maxIters ? maxIters : std::max(1, static_cast<int>(needed));
+}
+
+} // namespace ransac
+} // namespace essential
+} // namespace cv
+
+#endif

@@ -1,0 +1,52 @@
+// This file is part of opencv_essential, licensed under the Apache License, Version 2.0.
+// See the LICENSE file at the top of the source tree.
+
+#include "solvers/levenberg_marquardt.hpp"
+
+#include "solvers/minimal_set_problem.hpp"
+#include "solvers/solution_output.hpp"
+
+#include <Eigen/Cholesky>
+
+namespace cv {
+namespace essential {
+namespace solvers {
+
+int LevenbergMarquardtSolver::solve(const Point2d* x1, const Point2d* x2, RNG& rng,
+                                    Matx33d* solutions)
+{
+    geometry::EssentialPose pose = randomStart(rng);
+    geometry::Vector5d r;
+    geometry::Matrix5d J;
+    double cost = evaluateMinimalSet(pose, x1, x2, r, J);
+    if (!(cost < HUGE_VAL)) return 0;
+    geometry::Matrix5d A = J.transpose() * J;
+    geometry::Vector5d g = J.transpose() * r;
+    double lambda = settings_.initialLambda;
+    for (int it = 0; it < settings_.maxIterations; ++it) {
+        lastIterations_ = it;
+        if (cost < settings_.convergedCost) return writeSolution(pose, solutions);
+        geometry::Matrix5d damped = A;
+        damped.diagonal() *= 1.0 + lambda;
+        const geometry::Vector5d step = damped.ldlt().solve(-g);
+        geometry::EssentialPose trial = pose;
+        trial.update(step);
+        const double trialCost = minimalSetCost(trial, x1, x2);
+        if (step.allFinite() && trialCost < cost) {
+            pose = trial;
+            cost = evaluateMinimalSet(pose, x1, x2, r, J);
+            A = J.transpose() * J;
+            g = J.transpose() * r;
+            lambda *= 0.1;
+        } else {
+            lambda *= 10.0;
+            if (lambda > settings_.maxLambda) return 0;
+        }
+    }
+    lastIterations_ = settings_.maxIterations;
+    return cost < settings_.convergedCost ? writeSolution(pose, solutions) : 0;
+}
+
+} // namespace solvers
+} // namespace essential
+} // namespace cv

@@ -1,0 +1,60 @@
+// This file is part of opencv_essential, licensed under the Apache License, Version 2.0.
+// See the LICENSE file at the top of the source tree.
+
+// "lm": Levenberg-Marquardt on a minimal set of five correspondences (Rosten et al., Algorithm 1).
+
+#ifndef OPENCV_ESSENTIAL_SOLVERS_LEVENBERG_MARQUARDT_HPP
+#define OPENCV_ESSENTIAL_SOLVERS_LEVENBERG_MARQUARDT_HPP
+
+#include "opencv2/essential/solver.hpp"
+
+namespace cv {
+namespace essential {
+namespace solvers {
+
+/** Caps and tolerances of the LM solver; docs/SOLVERS.md records the measurement behind each. */
+struct LevenbergMarquardtSettings
+{
+    /** Trial steps (accepted or not) before a hypothesis is abandoned. */
+    int maxIterations = 20;
+    /** Converged when the sum of squared algebraic residuals falls below this (see GN). */
+    double convergedCost = 1e-20;
+    /** Initial damping, relative to the diagonal of J^T J. */
+    double initialLambda = 1e-3;
+    /** Give up when the damping grows beyond this: no descent direction left (a local minimum with
+    a non-zero residual, which a minimal set only has when the start was bad or the sample is
+    contaminated). */
+    double maxLambda = 1e6;
+    /** See GaussNewtonSettings::successRate. */
+    double successRate = 0.6;
+};
+
+/** The LM minimal solver: damped Gauss-Newton steps (J^T J + lambda diag(J^T J)) d = -J^T r, a step
+accepted only if it lowers the cost. Slower per iteration than GN, but it converges from more
+starting points. Yields 0 or 1 essential matrix. */
+class LevenbergMarquardtSolver : public EssentialSolver
+{
+public:
+    explicit LevenbergMarquardtSolver(
+        const LevenbergMarquardtSettings& settings = LevenbergMarquardtSettings())
+        : settings_(settings)
+    {
+    }
+    int sampleSize() const override { return 5; }
+    int maxSolutions() const override { return 1; }
+    int solve(const Point2d* x1, const Point2d* x2, RNG& rng, Matx33d* solutions) override;
+    double successRate() const override { return settings_.successRate; }
+
+    /** Trial steps used by the last call of solve() (for measurements). */
+    int lastIterations() const { return lastIterations_; }
+
+private:
+    LevenbergMarquardtSettings settings_;
+    int lastIterations_ = 0;
+};
+
+} // namespace solvers
+} // namespace essential
+} // namespace cv
+
+#endif

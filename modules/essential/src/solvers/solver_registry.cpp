@@ -1,0 +1,86 @@
+// This file is part of opencv_essential, licensed under the Apache License, Version 2.0.
+// See the LICENSE file at the top of the source tree.
+
+// The process-wide table of solver factories, keyed by name. The built-in solvers are put in on
+// first use (not by static initialisers, whose order across translation units is unspecified and
+// which a static link may drop).
+
+#include "opencv2/essential/solver.hpp"
+
+#include "solvers/gauss_newton.hpp"
+#include "solvers/levenberg_marquardt.hpp"
+
+#include <map>
+#include <mutex>
+
+namespace cv {
+namespace essential {
+
+EssentialSolver::~EssentialSolver() {}
+
+namespace {
+
+struct Registry
+{
+    std::mutex mutex;
+    std::map<std::string, EssentialSolverFactory> factories;
+
+    Registry()
+    {
+        factories["gn"] = [] { return makePtr<solvers::GaussNewtonSolver>(); };
+        factories["lm"] = [] { return makePtr<solvers::LevenbergMarquardtSolver>(); };
+    }
+};
+
+Registry& registry()
+{
+    static Registry instance;
+    return instance;
+}
+
+} // namespace
+
+void registerSolver(const std::string& name, const EssentialSolverFactory& factory)
+{
+    if (name.empty()) CV_Error(Error::StsBadArg, "registerSolver: the solver name is empty");
+    if (!factory)
+        CV_Error(Error::StsBadArg, "registerSolver: the factory of solver '" + name + "' is empty");
+    Registry& r = registry();
+    std::lock_guard<std::mutex> lock(r.mutex);
+    r.factories[name] = factory;
+}
+
+Ptr<EssentialSolver> createSolver(const std::string& name)
+{
+    EssentialSolverFactory factory;
+    {
+        Registry& r = registry();
+        std::lock_guard<std::mutex> lock(r.mutex);
+        auto it = r.factories.find(name);
+        if (it == r.factories.end()) {
+            std::string known;
+            for (const auto& kv : r.factories) known += (known.empty() ? "" : ", ") + kv.first;
+            CV_Error(Error::StsBadArg,
+                     "createSolver: unknown solver '" + name + "' (registered: " + known + ")");
+        }
+        factory = it->second;
+    }
+    Ptr<EssentialSolver> solver = factory();
+    if (!solver) CV_Error(Error::StsError, "createSolver: the factory of '" + name + "' returned null");
+    if (solver->sampleSize() < 5 || solver->maxSolutions() < 1)
+        CV_Error(Error::StsBadArg, "createSolver: solver '" + name +
+                                       "' must have sampleSize() >= 5 and maxSolutions() >= 1");
+    return solver;
+}
+
+std::vector<std::string> listSolvers()
+{
+    Registry& r = registry();
+    std::lock_guard<std::mutex> lock(r.mutex);
+    std::vector<std::string> names;
+    for (const auto& kv : r.factories) names.push_back(kv.first);
+    return names;
+}
+
+} // namespace essential
+} // namespace cv

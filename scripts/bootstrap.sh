@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# Installs the Debian packages needed to build, test and run opencv_essential, if any is missing.
+# Quiet and quick when everything is present; runs apt-get update only when something is missing.
+# Licensed under the Apache License, Version 2.0.
+set -euo pipefail
+
+packages=(cmake g++ make libopencv-dev libeigen3-dev libgtest-dev libbenchmark-dev)
+
+missing=()
+for pkg in "${packages[@]}"; do
+    status=$(dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null || true)
+    if [[ "$status" != *"install ok installed"* ]]; then
+        missing+=("$pkg")
+    fi
+done
+
+if [[ ${#missing[@]} -eq 0 ]]; then
+    exit 0
+fi
+
+if [[ $(id -u) -eq 0 ]]; then
+    as_root=()
+elif command -v sudo >/dev/null 2>&1; then
+    as_root=(sudo)
+else
+    echo "bootstrap.sh: missing packages (${missing[*]}) and not root, no sudo available" >&2
+    exit 1
+fi
+
+echo "bootstrap.sh: installing ${missing[*]}" >&2
+export DEBIAN_FRONTEND=noninteractive
+"${as_root[@]}" env DEBIAN_FRONTEND=noninteractive apt-get update -q
+"${as_root[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends \
+    "${missing[@]}"

@@ -1,0 +1,16 @@
+#!/usr/bin/env bash
+# Builds the Release tree (see build.sh) and runs essential_pair on the bundled Leuven pair:
+# prints the matches, E, R, t, the inliers and the time of each stage, next to OpenCV's
+# findEssentialMat + recoverPose on the same matches. Extra arguments go to essential_pair,
+# e.g. scripts/demo.sh --solver lm --threshold 0.5
+# Licensed under the Apache License, Version 2.0.
+set -euo pipefail
+
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+
+scripts/build.sh
+
+build_dir=${BUILD_DIR:-build}
+echo
+exec "$build_dir/bin/essential_pair" data/pairs/leuvenA.jpg data/pairs/leuvenB.jpg \
+    --camera-file data/pairs/leuven.camera "$@"

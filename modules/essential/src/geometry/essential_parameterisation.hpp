@@ -13,6 +13,7 @@
 #include "geometry/so3.hpp"
 
 #include <Eigen/Core>
+#include <Eigen/Geometry> // cross products
 
 #include <cmath>
 

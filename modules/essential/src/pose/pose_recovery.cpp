@@ -28,8 +28,8 @@ both views for the pose (R, t), X2 = R X1 + t.
 With a = R q1 and b = q2 the depths minimise |z1 a + t - z2 b|^2, whose normal equations are
     [ a.a  -a.b ] [z1]   [ -a.t ]
     [ -a.b  b.b ] [z2] = [  b.t ].
-Their determinant d = |a|^2 |b|^2 - (a.b)^2 = |a x b|^2 is >= 0, so the signs of the depths are those
-of the numerators of Cramer's rule; parallel rays (d = 0) have no depth and never count. */
+Their determinant d = |a|^2 |b|^2 - (a.b)^2 = |a x b|^2 is >= 0, so the signs of the depths are
+those of the numerators of Cramer's rule; parallel rays (d = 0) have no depth and never count. */
 inline bool inFront(const Eigen::Matrix3d& R, const Eigen::Vector3d& t, const Point2d& q1,
                     const Point2d& q2)
 {
@@ -51,12 +51,14 @@ bool recoverPoseNormalised(const Matx33d& E, const Point2d* x1, const Point2d* x
 {
     Eigen::Matrix3d Ee;
     for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) Ee(i, j) = E(i, j);
+        for (int j = 0; j < 3; ++j)
+            Ee(i, j) = E(i, j);
     Eigen::Matrix3d R1, R2;
     Eigen::Vector3d t;
     if (!geometry::decomposeEssential(Ee, R1, R2, t) || !t.allFinite() || !(t.norm() > 0.0)) {
         if (maskOut)
-            for (int i = 0; i < n; ++i) maskOut[i] = 0;
+            for (int i = 0; i < n; ++i)
+                maskOut[i] = 0;
         return false;
     }
     t.normalize();
@@ -82,7 +84,8 @@ bool recoverPoseNormalised(const Matx33d& E, const Point2d* x1, const Point2d* x
         }
     }
     for (int i = 0; i < 3; ++i) {
-        for (int j = 0; j < 3; ++j) out.R(i, j) = (*rotations[best])(i, j);
+        for (int j = 0; j < 3; ++j)
+            out.R(i, j) = (*rotations[best])(i, j);
         out.t[i] = translations[best][i];
     }
     out.inFront = counts[best];

@@ -26,7 +26,8 @@ SearchResult searchLmeds(const Problem& problem, EssentialSolver& solver, RNG& r
     const double assumedInlierRatio = 0.55;
     const int samples = std::max(
         3, requiredIterations(settings.confidence, assumedInlierRatio, buffer.sampleSize,
-                              solver.successRate(), settings.maxIters));
+                              solver.successRate(),
+                              sampleCap(settings.maxIters, solver.successRate())));
     std::vector<double> errors(static_cast<size_t>(n));
     double bestMedian = HUGE_VAL;
     for (; result.iterations < samples; ++result.iterations) {

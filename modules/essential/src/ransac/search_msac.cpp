@@ -20,7 +20,8 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
     if (n < buffer.sampleSize) return result;
 
     Score best;
-    int needed = settings.maxIters;
+    const int cap = sampleCap(settings.maxIters, solver.successRate());
+    int needed = cap;
     while (result.iterations < needed) {
         ++result.iterations;
         const int count = buffer.drawAndSolve(problem, solver, rng);
@@ -34,8 +35,7 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
                 result.E = buffer.solutions[h];
                 result.found = true;
                 needed = requiredIterations(settings.confidence, double(s.inliers) / n,
-                                            buffer.sampleSize, solver.successRate(),
-                                            settings.maxIters);
+                                            buffer.sampleSize, solver.successRate(), cap);
             }
         }
     }

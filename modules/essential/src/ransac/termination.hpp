@@ -29,6 +29,17 @@ inline int requiredIterations(double confidence, double inlierRatio, int sampleS
     return needed >= maxIters ? maxIters : std::max(1, static_cast<int>(needed));
 }
 
+/** The sample cap for an iteration cap `maxIters` given in OpenCV's units. OpenCV's cap counts
+samples of a direct solver, each of which solves an outlier-free sample; a solver that succeeds on
+a fraction s of outlier-free samples gets maxIters / s samples, so that the confidence reached at
+the cap is the same. (Its samples are cheaper by more than that factor: see docs/SOLVERS.md.) */
+inline int sampleCap(int maxIters, double solverSuccess)
+{
+    const double s = std::min(1.0, std::max(solverSuccess, 0.01));
+    const double cap = std::ceil(maxIters / s);
+    return cap > 1e9 ? 1000000000 : static_cast<int>(cap);
+}
+
 } // namespace ransac
 } // namespace essential
 } // namespace cv

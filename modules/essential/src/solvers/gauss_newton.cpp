@@ -12,9 +12,9 @@ namespace cv {
 namespace essential {
 namespace solvers {
 
-int GaussNewtonSolver::solve(const Point2d* x1, const Point2d* x2, RNG& rng, Matx33d* solutions)
+int GaussNewtonSolver::solve(const Point2d* x1, const Point2d* x2, RNG& /*rng*/, Matx33d* solutions)
 {
-    geometry::EssentialPose pose = randomStart(rng);
+    geometry::EssentialPose pose = bestTranslationStart(x1, x2, 5, Eigen::Matrix3d::Identity());
     geometry::Vector5d r;
     geometry::Matrix5d J;
     double previousCost = -1.0;

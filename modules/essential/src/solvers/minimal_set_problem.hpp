@@ -1,7 +1,7 @@
 // This file is part of opencv_essential, licensed under the Apache License, Version 2.0.
 // See the LICENSE file at the top of the source tree.
 
-// What the iterative minimal-set solvers (gn, lm) share: the random starting pose and the 5x5
+// What the iterative minimal-set solvers (gn, lm) share: the starting pose and the 5x5
 // system of residuals and Jacobian of a five-point sample in the 5-DOF parameterisation.
 
 #ifndef OPENCV_ESSENTIAL_SOLVERS_MINIMAL_SET_PROBLEM_HPP
@@ -9,30 +9,38 @@
 
 #include "geometry/essential_parameterisation.hpp"
 
+#include <Eigen/Eigenvalues>
 #include <opencv2/core.hpp>
 
 namespace cv {
 namespace essential {
 namespace solvers {
 
-/** A uniformly distributed unit vector (normalised Gaussian triple). */
-inline Eigen::Vector3d randomUnitVector(RNG& rng)
-{
-    for (;;) {
-        Eigen::Vector3d v(rng.gaussian(1.0), rng.gaussian(1.0), rng.gaussian(1.0));
-        const double n = v.norm();
-        if (n > 1e-6) return v / n;
-    }
-}
+/** The starting point of one optimisation: R = R0 and the translation that best explains the
+sample for that rotation. With c_i = (R0 q1_i) x q2_i the residuals are t . c_i, so the unit t
+minimising sum (t . c_i)^2 is the eigenvector of sum c_i c_i^T with the smallest eigenvalue (its
+sign is free: E and -E are the same model).
 
-/** The starting point of one optimisation: R = I (the paper notes that the method is very
-insensitive to the initial rotation, and small inter-frame rotations are the common case) and a
-translation direction drawn uniformly from the sphere. */
-inline geometry::EssentialPose randomStart(RNG& rng)
+The paper starts from a random rotation and translation direction. Measured on noise-free minimal
+sets of its synthetic protocol (5000 problems, docs/SOLVERS.md), starting GN from R = I with this
+translation reaches the true E in 35.7% of calls with 6.5 iterations on average (cap 10), against
+25.4% and 8.2 iterations from a random translation direction; random perturbations of R0 (0.1 and
+0.3 rad) lowered the rate to 28% and 20%. Small inter-frame rotations, the common case in video,
+favour R0 = I further. */
+inline geometry::EssentialPose bestTranslationStart(const Point2d* x1, const Point2d* x2, int n,
+                                                   const Eigen::Matrix3d& R0)
 {
+    Eigen::Matrix3d S = Eigen::Matrix3d::Zero();
+    for (int i = 0; i < n; ++i) {
+        const Eigen::Vector3d c =
+            (R0 * Eigen::Vector3d(x1[i].x, x1[i].y, 1.0)).cross(Eigen::Vector3d(x2[i].x, x2[i].y, 1.0));
+        S.noalias() += c * c.transpose();
+    }
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig;
+    eig.computeDirect(S);
     geometry::EssentialPose pose;
-    pose.R.setIdentity();
-    pose.Rt = geometry::rotationWithFirstColumn(randomUnitVector(rng));
+    pose.R = R0;
+    pose.Rt = geometry::rotationWithFirstColumn(eig.eigenvectors().col(0));
     return pose;
 }
 

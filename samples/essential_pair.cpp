@@ -1,0 +1,436 @@
+// This file is part of opencv_essential, licensed under the Apache License, Version 2.0.
+// See the LICENSE file at the top of the source tree.
+//
+// essential_pair: the relative pose of two calibrated images. FAST-9 corners and ORB descriptors on
+// an image pyramid, brute-force matching, then cv::essential::findEssentialMatIter; the same
+// matches also go through cv::findEssentialMat + cv::recoverPose for comparison.
+
+#include "frontend/frontend.hpp"
+
+#include <opencv2/calib3d.hpp>
+#include <opencv2/core.hpp>
+#include <opencv2/essential.hpp>
+#include <opencv2/imgcodecs.hpp>
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace {
+
+const char* const kUsage =
+    "usage: essential_pair IMG1 IMG2 (--camera fx,fy,cx,cy | --camera-file F)\n"
+    "                      [--solver NAME] [--threshold PX] [--seed S] [--keep FRACTION]\n"
+    "                      [--max-iters N]\n"
+    "\n"
+    "  --camera fx,fy,cx,cy  intrinsics of both images, in pixels\n"
+    "  --camera-file F       a file holding `fx fy cx cy [width height]` on one line,\n"
+    "                        or a 3 x 3 camera matrix as three lines of three numbers\n"
+    "  --solver NAME         minimal-set solver of cv::essential (default gn; see listSolvers)\n"
+    "  --threshold PX        inlier threshold on the Sampson distance, pixels (default 1)\n"
+    "  --seed S              seed of the estimator's random generator (decimal or 0x hex)\n"
+    "  --keep FRACTION       fraction of the matches kept, the best by descriptor distance,\n"
+    "                        in (0, 1] (default 0.2)\n"
+    "  --max-iters N         iteration cap of both estimators (default 1000, as OpenCV)\n";
+
+// A usage or input error: main() prints its message as one line and exits with `code`.
+struct Failure
+{
+    std::string message;
+    int code;
+};
+
+[[noreturn]] void fail(const std::string& message, int code = 1)
+{
+    throw Failure{message, code};
+}
+
+double elapsedMs(std::chrono::steady_clock::time_point start)
+{
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+        .count();
+}
+
+bool parseDouble(const std::string& text, double& value)
+{
+    if (text.empty()) return false;
+    const char* begin = text.c_str();
+    char* end = nullptr;
+    errno = 0;
+    value = std::strtod(begin, &end);
+    return errno == 0 && end != begin && *end == '\0' && std::isfinite(value);
+}
+
+std::vector<std::string> split(const std::string& text, char separator)
+{
+    std::vector<std::string> parts;
+    std::string part;
+    std::istringstream stream(text);
+    while (std::getline(stream, part, separator))
+        parts.push_back(part);
+    if (!text.empty() && text.back() == separator) parts.emplace_back();
+    return parts;
+}
+
+cv::Matx33d cameraFromValues(double fx, double fy, double cx, double cy)
+{
+    return cv::Matx33d(fx, 0, cx, 0, fy, cy, 0, 0, 1);
+}
+
+void checkCamera(const cv::Matx33d& K, const std::string& origin)
+{
+    for (int i = 0; i < 9; ++i)
+        if (!std::isfinite(K.val[i])) fail("malformed camera (" + origin + "): non-finite value");
+    if (!(K(0, 0) > 0.0) || !(K(1, 1) > 0.0))
+        fail("malformed camera (" + origin + "): fx and fy must be positive");
+    if (K(2, 0) != 0.0 || K(2, 1) != 0.0 || K(2, 2) != 1.0)
+        fail("malformed camera (" + origin + "): the last row of the matrix must be 0 0 1");
+}
+
+// --camera fx,fy,cx,cy
+cv::Matx33d parseCameraOption(const std::string& text)
+{
+    const std::vector<std::string> parts = split(text, ',');
+    double v[4];
+    if (parts.size() != 4)
+        fail("malformed camera '" + text + "': expected --camera fx,fy,cx,cy (four numbers)", 2);
+    for (int i = 0; i < 4; ++i)
+        if (!parseDouble(parts[i], v[i]))
+            fail("malformed camera '" + text + "': '" + parts[i] + "' is not a number", 2);
+    const cv::Matx33d K = cameraFromValues(v[0], v[1], v[2], v[3]);
+    checkCamera(K, "--camera " + text);
+    return K;
+}
+
+// --camera-file F: `fx fy cx cy [width height]` on one line, or a 3 x 3 matrix on three lines.
+// Blank lines and lines starting with '#' are ignored.
+cv::Matx33d readCameraFile(const std::string& path, cv::Size& imageSize)
+{
+    std::ifstream file(path);
+    if (!file) fail("cannot open camera file '" + path + "'");
+
+    std::vector<std::vector<double>> rows;
+    std::string line;
+    while (std::getline(file, line)) {
+        const size_t first = line.find_first_not_of(" \t\r");
+        if (first == std::string::npos || line[first] == '#') continue;
+        std::istringstream stream(line);
+        std::vector<double> row;
+        std::string token;
+        while (stream >> token) {
+            double value;
+            if (!parseDouble(token, value))
+                fail("malformed camera file '" + path + "': '" + token + "' is not a number");
+            row.push_back(value);
+        }
+        rows.push_back(row);
+    }
+
+    cv::Matx33d K;
+    imageSize = cv::Size();
+    if (rows.size() == 1 && (rows[0].size() == 4 || rows[0].size() == 6)) {
+        const std::vector<double>& r = rows[0];
+        K = cameraFromValues(r[0], r[1], r[2], r[3]);
+        if (r.size() == 6) {
+            if (r[4] < 1 || r[5] < 1 || r[4] != std::floor(r[4]) || r[5] != std::floor(r[5]))
+                fail("malformed camera file '" + path +
+                     "': width and height must be positive "
+                     "integers");
+            imageSize = cv::Size(static_cast<int>(r[4]), static_cast<int>(r[5]));
+        }
+    } else if (rows.size() == 3 && rows[0].size() == 3 && rows[1].size() == 3 &&
+               rows[2].size() == 3) {
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j)
+                K(i, j) = rows[i][j];
+    } else {
+        fail("malformed camera file '" + path +
+             "': expected one line `fx fy cx cy [width height]` or three lines of three numbers");
+    }
+    checkCamera(K, path);
+    return K;
+}
+
+cv::Mat readImage(const std::string& path)
+{
+    if (!std::ifstream(path))
+        fail("cannot open image '" + path + "' (no such file or not readable)");
+    cv::Mat image = cv::imread(path, cv::IMREAD_GRAYSCALE);
+    if (image.empty())
+        fail("cannot read image '" + path + "' (not an image format OpenCV can decode)");
+    return image;
+}
+
+struct Options
+{
+    std::string image1, image2;
+    std::string camera, cameraFile;
+    std::string solver = cv::essential::EssentialParams().solver;
+    double threshold = cv::essential::EssentialParams().threshold;
+    std::uint64_t seed = cv::essential::EssentialParams().seed;
+    double keep = essential_samples::FrontEndParams().keepFraction;
+    int maxIters = cv::essential::EssentialParams().maxIters;
+};
+
+Options parseOptions(int argc, char** argv)
+{
+    Options options;
+    std::vector<std::string> positional;
+    for (int i = 1; i < argc; ++i) {
+        std::string arg = argv[i];
+        if (arg == "-h" || arg == "--help") {
+            std::cout << kUsage;
+            std::exit(0);
+        }
+        if (arg.rfind("--", 0) != 0 || arg.size() == 2) {
+            positional.push_back(arg);
+            continue;
+        }
+        std::string value;
+        const size_t equals = arg.find('=');
+        if (equals != std::string::npos) {
+            value = arg.substr(equals + 1);
+            arg = arg.substr(0, equals);
+        } else if (i + 1 < argc) {
+            value = argv[++i];
+        } else {
+            fail("option " + arg + " needs a value (see --help)", 2);
+        }
+
+        if (arg == "--camera") {
+            options.camera = value;
+        } else if (arg == "--camera-file") {
+            options.cameraFile = value;
+        } else if (arg == "--solver") {
+            options.solver = value;
+        } else if (arg == "--threshold") {
+            if (!parseDouble(value, options.threshold) || !(options.threshold > 0.0))
+                fail("--threshold must be a positive number of pixels, not '" + value + "'", 2);
+        } else if (arg == "--seed") {
+            char* end = nullptr;
+            errno = 0;
+            const unsigned long long seed = std::strtoull(value.c_str(), &end, 0);
+            if (value.empty() || value[0] == '-' || errno != 0 || *end != '\0')
+                fail("--seed must be a non-negative integer, not '" + value + "'", 2);
+            options.seed = static_cast<std::uint64_t>(seed);
+        } else if (arg == "--keep") {
+            if (!parseDouble(value, options.keep) || !(options.keep > 0.0 && options.keep <= 1.0))
+                fail("--keep must be a fraction in (0, 1], not '" + value + "'", 2);
+        } else if (arg == "--max-iters") {
+            char* end = nullptr;
+            errno = 0;
+            const long iters = std::strtol(value.c_str(), &end, 10);
+            if (value.empty() || errno != 0 || *end != '\0' || iters < 1 || iters > 100000000)
+                fail("--max-iters must be a positive integer, not '" + value + "'", 2);
+            options.maxIters = static_cast<int>(iters);
+        } else {
+            fail("unknown option '" + arg + "' (see --help)", 2);
+        }
+    }
+
+    if (positional.size() != 2)
+        fail("expected two images, got " + std::to_string(positional.size()) + " (see --help)", 2);
+    options.image1 = positional[0];
+    options.image2 = positional[1];
+    if (options.camera.empty() == options.cameraFile.empty())
+        fail(options.camera.empty() ? "missing camera: give --camera fx,fy,cx,cy or --camera-file F"
+                                    : "give only one of --camera and --camera-file",
+             2);
+
+    const std::vector<std::string> solvers = cv::essential::listSolvers();
+    if (std::find(solvers.begin(), solvers.end(), options.solver) == solvers.end()) {
+        std::string known;
+        for (const std::string& name : solvers)
+            known += (known.empty() ? "" : ", ") + name;
+        fail("unknown solver '" + options.solver + "' (known: " + known + ")", 2);
+    }
+    return options;
+}
+
+std::string formatMatrix(const cv::Mat& m)
+{
+    std::string text;
+    char buffer[64];
+    for (int r = 0; r < m.rows; ++r) {
+        text += r == 0 ? "  [" : "   ";
+        for (int c = 0; c < m.cols; ++c) {
+            std::snprintf(buffer, sizeof(buffer), "%s%10.6f", c == 0 ? "" : ", ",
+                          m.at<double>(r, c));
+            text += buffer;
+        }
+        text += r + 1 == m.rows ? "]\n" : ";\n";
+    }
+    return text;
+}
+
+// Angle in degrees of the rotation Ra^T Rb.
+double rotationAngleDeg(const cv::Matx33d& Ra, const cv::Matx33d& Rb)
+{
+    const cv::Matx33d D = Ra.t() * Rb;
+    const double c = std::max(-1.0, std::min(1.0, (cv::trace(D) - 1.0) / 2.0));
+    return std::acos(c) * 180.0 / CV_PI;
+}
+
+double directionAngleDeg(const cv::Vec3d& a, const cv::Vec3d& b)
+{
+    const double na = cv::norm(a), nb = cv::norm(b);
+    if (na == 0.0 || nb == 0.0) return 0.0;
+    const double c = std::max(-1.0, std::min(1.0, a.dot(b) / (na * nb)));
+    return std::acos(c) * 180.0 / CV_PI;
+}
+
+double percent(int part, int whole)
+{
+    return whole > 0 ? 100.0 * part / whole : 0.0;
+}
+
+int run(int argc, char** argv)
+{
+    const Options options = parseOptions(argc, argv);
+
+    cv::Size cameraImageSize;
+    const cv::Matx33d K = options.camera.empty()
+                              ? readCameraFile(options.cameraFile, cameraImageSize)
+                              : parseCameraOption(options.camera);
+    const cv::Mat image1 = readImage(options.image1);
+    const cv::Mat image2 = readImage(options.image2);
+    if (cameraImageSize.area() > 0 &&
+        (image1.size() != cameraImageSize || image2.size() != cameraImageSize))
+        std::cerr << "essential_pair: warning: the camera file is for " << cameraImageSize.width
+                  << " x " << cameraImageSize.height << " images\n";
+
+    std::printf("images: %s (%d x %d), %s (%d x %d)\n", options.image1.c_str(), image1.cols,
+                image1.rows, options.image2.c_str(), image2.cols, image2.rows);
+    std::printf("camera: fx %.3f, fy %.3f, cx %.3f, cy %.3f\n", K(0, 0), K(1, 1), K(0, 2), K(1, 2));
+
+    // Front end.
+    essential_samples::FrontEndParams frontParams;
+    frontParams.keepFraction = options.keep;
+    auto start = std::chrono::steady_clock::now();
+    const essential_samples::Features features1 =
+        essential_samples::detectAndDescribe(image1, frontParams);
+    const double timeFeatures1 = elapsedMs(start);
+    start = std::chrono::steady_clock::now();
+    const essential_samples::Features features2 =
+        essential_samples::detectAndDescribe(image2, frontParams);
+    const double timeFeatures2 = elapsedMs(start);
+    start = std::chrono::steady_clock::now();
+    const essential_samples::Matches matches =
+        essential_samples::matchFeatures(features1, features2, frontParams);
+    const double timeMatching = elapsedMs(start);
+
+    std::printf("corners: %zu in image 1, %zu in image 2 (FAST-9 on %d pyramid levels)\n",
+                features1.keypoints.size(), features2.keypoints.size(), features1.levels);
+    std::printf("matches: %zu (best %.0f%% of %d by Hamming distance, up to %d)\n",
+                matches.points1.size(), 100.0 * options.keep, matches.candidates,
+                matches.maxDistance);
+    const int n = static_cast<int>(matches.points1.size());
+    if (n < 5) fail("only " + std::to_string(n) + " matches; at least 5 are needed");
+
+    // cv::essential.
+    cv::essential::EssentialParams params;
+    params.solver = options.solver;
+    params.threshold = options.threshold;
+    params.seed = options.seed;
+    params.maxIters = options.maxIters;
+    cv::essential::EssentialReport report;
+    cv::Mat mask;
+    start = std::chrono::steady_clock::now();
+    const cv::Mat E = cv::essential::findEssentialMatIter(matches.points1, matches.points2, K,
+                                                          params, mask, &report);
+    const double timeEssential = elapsedMs(start);
+
+    std::printf("\ncv::essential::findEssentialMatIter (solver %s, threshold %g px, seed 0x%llx)\n",
+                params.solver.c_str(), params.threshold,
+                static_cast<unsigned long long>(params.seed));
+    const bool found = !E.empty() && report.success;
+    if (found) {
+        std::printf("E =\n%s", formatMatrix(cv::Mat(report.E)).c_str());
+        if (report.poseRecovered) {
+            std::printf("R =\n%s", formatMatrix(cv::Mat(report.R)).c_str());
+            std::printf("t =\n%s", formatMatrix(cv::Mat(report.t).t()).c_str());
+        } else {
+            std::printf("R, t: not recovered\n");
+        }
+    } else {
+        std::printf("no essential matrix found\n");
+    }
+    std::printf("inliers: %d of %d (%.1f%%), %d in front of both cameras\n", report.inliers, n,
+                percent(report.inliers, n), report.pointsInFront);
+    std::printf("hypotheses: %d generated, %d converged, %d scored; %d iterations, "
+                "%d refinement iterations\n",
+                report.hypothesesGenerated, report.hypothesesConverged, report.hypothesesScored,
+                report.iterations, report.refineIterations);
+
+    // OpenCV on the same matches.
+    cv::Mat cvMask;
+    start = std::chrono::steady_clock::now();
+    const cv::Mat cvE = cv::findEssentialMat(matches.points1, matches.points2, K, cv::RANSAC, 0.999,
+                                             options.threshold, options.maxIters, cvMask);
+    const double timeCvEssential = elapsedMs(start);
+    const int cvInliers = cvMask.empty() ? 0 : cv::countNonZero(cvMask);
+    cv::Mat cvR, cvT;
+    int cvInFront = 0;
+    double timeCvPose = 0.0;
+    const bool cvFound = cvE.rows == 3 && cvE.cols == 3;
+    if (cvFound) {
+        start = std::chrono::steady_clock::now();
+        cvInFront = cv::recoverPose(cvE, matches.points1, matches.points2, K, cvR, cvT, cvMask);
+        timeCvPose = elapsedMs(start);
+    }
+
+    std::printf("\ncv::findEssentialMat + cv::recoverPose (RANSAC, prob 0.999, threshold %g px)\n",
+                options.threshold);
+    if (cvFound) {
+        std::printf("E =\n%s", formatMatrix(cvE / cv::norm(cvE) * std::sqrt(2.0)).c_str());
+        std::printf("R =\n%s", formatMatrix(cvR).c_str());
+        std::printf("t =\n%s", formatMatrix(cvT.t()).c_str());
+    } else {
+        std::printf("no essential matrix found\n");
+    }
+    std::printf("inliers: %d of %d (%.1f%%), %d in front of both cameras\n", cvInliers, n,
+                percent(cvInliers, n), cvInFront);
+    if (found && report.poseRecovered && cvFound)
+        std::printf("difference: rotation %.3f deg, translation direction %.3f deg\n",
+                    rotationAngleDeg(report.R, cv::Matx33d(cvR)),
+                    directionAngleDeg(report.t, cv::Vec3d(cvT)));
+
+    std::printf("\ntimes (ms):\n");
+    std::printf("  front end        %9.2f  (image 1 %.2f, image 2 %.2f, matching %.2f)\n",
+                timeFeatures1 + timeFeatures2 + timeMatching, timeFeatures1, timeFeatures2,
+                timeMatching);
+    std::printf("  cv::essential    %9.2f  (setup %.2f, search %.2f, refine %.2f, pose %.2f)\n",
+                timeEssential, report.timeSetupMs, report.timeSearchMs, report.timeRefineMs,
+                report.timePoseMs);
+    std::printf("  OpenCV           %9.2f  (findEssentialMat %.2f, recoverPose %.2f)\n",
+                timeCvEssential + timeCvPose, timeCvEssential, timeCvPose);
+    return found ? 0 : 3;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    try {
+        return run(argc, argv);
+    } catch (const Failure& failure) {
+        std::cerr << "essential_pair: " << failure.message << "\n";
+        return failure.code;
+    } catch (const cv::Exception& e) {
+        std::cerr << "essential_pair: " << e.err << " (in " << e.func << ")\n";
+        return 1;
+    } catch (const std::exception& e) {
+        std::cerr << "essential_pair: " << e.what() << "\n";
+        return 1;
+    }
+}

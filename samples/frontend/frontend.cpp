@@ -1,0 +1,190 @@
+// This file is part of opencv_essential, licensed under the Apache License, Version 2.0.
+// See the LICENSE file at the top of the source tree.
+
+#include "frontend/frontend.hpp"
+
+#include <opencv2/features2d.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+namespace essential_samples {
+
+namespace {
+
+// ORB's descriptor patch is 31 x 31 pixels; the orientation uses a disc of this radius.
+const int kPatchSize = 31;
+const int kOrientationRadius = kPatchSize / 2;
+
+void checkParams(const FrontEndParams& params)
+{
+    if (params.fastThreshold < 1 || params.fastThreshold > 254)
+        throw std::invalid_argument("front end: fastThreshold must be in [1, 254]");
+    if (params.border < kOrientationRadius + 1)
+        throw std::invalid_argument("front end: border must be at least " +
+                                    std::to_string(kOrientationRadius + 1));
+    if (params.minLevelSize < 2 * params.border + 1)
+        throw std::invalid_argument("front end: minLevelSize must exceed twice the border");
+    if (!(params.keepFraction > 0.0 && params.keepFraction <= 1.0))
+        throw std::invalid_argument("front end: keepFraction must be in (0, 1]");
+}
+
+// Orientation of the intensity centroid of the disc of radius kOrientationRadius around (x, y),
+// in degrees in [0, 360), as ORB computes it. (x, y) must be at least the radius from the border.
+float intensityCentroidAngle(const cv::Mat& image, int x, int y)
+{
+    const int r = kOrientationRadius;
+    double m10 = 0.0, m01 = 0.0;
+    for (int dy = -r; dy <= r; ++dy) {
+        const int half = static_cast<int>(std::floor(std::sqrt(double(r * r - dy * dy))));
+        const uchar* row = image.ptr<uchar>(y + dy);
+        for (int dx = -half; dx <= half; ++dx) {
+            const double v = row[x + dx];
+            m10 += dx * v;
+            m01 += dy * v;
+        }
+    }
+    double angle = std::atan2(m01, m10) * 180.0 / CV_PI;
+    if (angle < 0.0) angle += 360.0;
+    return static_cast<float>(angle);
+}
+
+} // namespace
+
+std::vector<double> pyramidScales(cv::Size imageSize, int minLevelSize)
+{
+    std::vector<double> scales{1.0};
+    // 1, 2/3, 1/2, 1/3, 1/4, 1/6, ...: two interleaved octave ladders, 1/2^k and (2/3)/2^k.
+    for (int level = 1;; ++level) {
+        const double octave = std::ldexp(1.0, -(level / 2));
+        const double scale = (level % 2 == 1) ? octave * 2.0 / 3.0 : octave;
+        const int width = cvRound(imageSize.width * scale);
+        const int height = cvRound(imageSize.height * scale);
+        if (std::min(width, height) < minLevelSize) break;
+        scales.push_back(scale);
+    }
+    return scales;
+}
+
+Features detectAndDescribe(const cv::Mat& image, const FrontEndParams& params)
+{
+    checkParams(params);
+    if (image.empty() || image.depth() != CV_8U)
+        throw std::invalid_argument("front end: expected a non-empty 8-bit image");
+
+    cv::Mat gray;
+    if (image.channels() == 1)
+        gray = image;
+    else if (image.channels() == 3)
+        cv::cvtColor(image, gray, cv::COLOR_BGR2GRAY);
+    else if (image.channels() == 4)
+        cv::cvtColor(image, gray, cv::COLOR_BGRA2GRAY);
+    else
+        throw std::invalid_argument("front end: expected a 1-, 3- or 4-channel image");
+
+    // One level of ORB, used as a descriptor extractor only: the keypoints come from FAST on our
+    // own pyramid, each level described on its own image.
+    const cv::Ptr<cv::ORB> orb =
+        cv::ORB::create(500, 1.2f, 1, params.border, 0, 2, cv::ORB::HARRIS_SCORE, kPatchSize);
+
+    Features features;
+    const std::vector<double> scales = pyramidScales(gray.size(), params.minLevelSize);
+    features.levels = static_cast<int>(scales.size());
+
+    for (int level = 0; level < features.levels; ++level) {
+        cv::Mat levelImage;
+        if (level == 0) {
+            levelImage = gray;
+        } else {
+            const cv::Size size(cvRound(gray.cols * scales[level]),
+                                cvRound(gray.rows * scales[level]));
+            cv::resize(gray, levelImage, size, 0, 0, cv::INTER_AREA);
+        }
+
+        std::vector<cv::KeyPoint> corners;
+        cv::FAST(levelImage, corners, params.fastThreshold, params.nonmaxSuppression,
+                 cv::FastFeatureDetector::TYPE_9_16);
+        features.cornersDetected += static_cast<int>(corners.size());
+
+        // Keep the corners whose patches fit, as ORB's own border filter would.
+        const cv::Rect inside(params.border, params.border, levelImage.cols - 2 * params.border,
+                              levelImage.rows - 2 * params.border);
+        std::vector<cv::KeyPoint> keypoints;
+        keypoints.reserve(corners.size());
+        for (cv::KeyPoint kp : corners) {
+            if (!inside.contains(kp.pt)) continue;
+            kp.octave = 0; // ORB picks the level of its own (one-level) pyramid from this
+            kp.size = static_cast<float>(kPatchSize);
+            kp.angle = params.upright
+                           ? 0.0f
+                           : intensityCentroidAngle(levelImage, cvRound(kp.pt.x), cvRound(kp.pt.y));
+            keypoints.push_back(kp);
+        }
+        if (keypoints.empty()) continue;
+
+        cv::Mat descriptors;
+        orb->compute(levelImage, keypoints, descriptors);
+        if (keypoints.empty()) continue;
+
+        // Back to level-0 pixel coordinates (pixel centres at integers on every level).
+        const double sx = double(gray.cols) / levelImage.cols;
+        const double sy = double(gray.rows) / levelImage.rows;
+        for (cv::KeyPoint& kp : keypoints) {
+            kp.pt.x = static_cast<float>((kp.pt.x + 0.5) * sx - 0.5);
+            kp.pt.y = static_cast<float>((kp.pt.y + 0.5) * sy - 0.5);
+            kp.size = static_cast<float>(kPatchSize / scales[level]);
+            kp.octave = level;
+        }
+        features.keypoints.insert(features.keypoints.end(), keypoints.begin(), keypoints.end());
+        features.descriptors.push_back(descriptors);
+    }
+    return features;
+}
+
+Matches matchFeatures(const Features& features1, const Features& features2,
+                      const FrontEndParams& params)
+{
+    checkParams(params);
+    Matches result;
+    if (features1.keypoints.empty() || features2.keypoints.empty()) return result;
+
+    // Every corner of image 2 against every corner of image 1; the nearest wins, however far.
+    std::vector<cv::DMatch> matches;
+    cv::BFMatcher matcher(cv::NORM_HAMMING, false);
+    matcher.match(features2.descriptors, features1.descriptors, matches);
+    result.candidates = static_cast<int>(matches.size());
+
+    // The best fraction by distance (stable, so that ties keep the order of the corners).
+    std::stable_sort(matches.begin(), matches.end(), [](const cv::DMatch& a, const cv::DMatch& b) {
+        return a.distance < b.distance;
+    });
+    const size_t keep = std::min(
+        matches.size(),
+        static_cast<size_t>(std::ceil(params.keepFraction * double(matches.size()) - 1e-9)));
+    matches.resize(keep);
+
+    // Random order with a fixed seed (Fisher-Yates on cv::RNG, identical on every platform).
+    cv::RNG rng(params.shuffleSeed);
+    for (size_t i = matches.size(); i > 1; --i) {
+        const size_t j = static_cast<size_t>(rng.uniform(0, static_cast<int>(i)));
+        std::swap(matches[i - 1], matches[j]);
+    }
+
+    result.points1.reserve(keep);
+    result.points2.reserve(keep);
+    result.distances.reserve(keep);
+    for (const cv::DMatch& m : matches) {
+        result.points1.push_back(features1.keypoints[m.trainIdx].pt);
+        result.points2.push_back(features2.keypoints[m.queryIdx].pt);
+        const int distance = cvRound(m.distance);
+        result.distances.push_back(distance);
+        result.maxDistance = std::max(result.maxDistance, distance);
+    }
+    return result;
+}
+
+} // namespace essential_samples

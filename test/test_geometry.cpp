@@ -1,0 +1,188 @@
+// This file is part of opencv_essential, licensed under the Apache License, Version 2.0.
+// See the LICENSE file at the top of the source tree.
+
+// The SO(3) exponential map and the 5-DOF essential parameterisation: algebraic properties, and
+// the analytic Jacobians (paper equations 3 and 4) against central finite differences.
+
+#include "geometry/essential_decomposition.hpp"
+#include "geometry/essential_parameterisation.hpp"
+#include "geometry/sampson.hpp"
+#include "geometry/so3.hpp"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+namespace {
+
+using namespace cv::essential::geometry;
+
+Eigen::Vector3d randomVector(std::mt19937_64& g, double scale)
+{
+    std::normal_distribution<double> n(0.0, scale);
+    return Eigen::Vector3d(n(g), n(g), n(g));
+}
+
+EssentialPose randomPose(std::mt19937_64& g)
+{
+    EssentialPose p;
+    p.R = expSO3(randomVector(g, 1.0));
+    p.Rt = expSO3(randomVector(g, 2.0));
+    return p;
+}
+
+TEST(SO3, ExpIsARotation)
+{
+    std::mt19937_64 g(1);
+    for (int i = 0; i < 200; ++i) {
+        const double scale = i < 100 ? 1.0 : 1e-5; // large angles and the small-angle branch
+        const Eigen::Matrix3d R = expSO3(randomVector(g, scale));
+        EXPECT_LT((R.transpose() * R - Eigen::Matrix3d::Identity()).norm(), 1e-14);
+        EXPECT_NEAR(R.determinant(), 1.0, 1e-14);
+    }
+}
+
+TEST(SO3, ExpRotatesByTheAngleAboutTheAxis)
+{
+    std::mt19937_64 g(2);
+    for (int i = 0; i < 100; ++i) {
+        const Eigen::Vector3d w = randomVector(g, 1.0);
+        const Eigen::Matrix3d R = expSO3(w);
+        EXPECT_LT((R * w - w).norm(), 1e-13 * (1 + w.norm())); // the axis is fixed
+        const double angle = std::acos(std::min(1.0, std::max(-1.0, (R.trace() - 1.0) / 2.0)));
+        const double expected = std::fmod(w.norm(), 2 * M_PI);
+        EXPECT_NEAR(angle, expected > M_PI ? 2 * M_PI - expected : expected, 1e-7);
+    }
+}
+
+TEST(SO3, ExpOfOppositeIsInverseAndSmallAngleIsContinuous)
+{
+    std::mt19937_64 g(3);
+    for (int i = 0; i < 100; ++i) {
+        const Eigen::Vector3d w = randomVector(g, 1.0);
+        EXPECT_LT((expSO3(w) * expSO3(-w) - Eigen::Matrix3d::Identity()).norm(), 1e-14);
+    }
+    // Both sides of the series/Rodrigues switch agree.
+    const Eigen::Vector3d axis = Eigen::Vector3d(1, 2, 3).normalized();
+    const Eigen::Matrix3d below = expSO3(axis * 0.99e-4), above = expSO3(axis * 1.01e-4);
+    EXPECT_LT((below - above).norm(), 3e-6);
+    EXPECT_LT((below - (Eigen::Matrix3d::Identity() + skew(axis * 0.99e-4))).norm(), 1e-8);
+}
+
+TEST(SO3, GeneratorsMatchThePaper)
+{
+    // G1 = [0 1 0; -1 0 0; 0 0 0], G2 = [0 0 1; 0 0 0; -1 0 0], G3 = [0 0 0; 0 0 1; 0 -1 0].
+    Eigen::Matrix3d G[3];
+    G[0] << 0, 1, 0, -1, 0, 0, 0, 0, 0;
+    G[1] << 0, 0, 1, 0, 0, 0, -1, 0, 0;
+    G[2] << 0, 0, 0, 0, 0, 1, 0, -1, 0;
+    const double h = 1e-7;
+    for (int k = 0; k < 3; ++k) {
+        double d[3] = {0, 0, 0};
+        d[k] = h;
+        const Eigen::Matrix3d derivative =
+            (expGenerators(d[0], d[1], d[2]) - Eigen::Matrix3d::Identity()) / h;
+        EXPECT_LT((derivative - G[k]).norm(), 1e-6) << "generator " << k + 1;
+    }
+}
+
+TEST(EssentialParameterisation, EssentialHasTheRightStructure)
+{
+    std::mt19937_64 g(4);
+    for (int i = 0; i < 50; ++i) {
+        const EssentialPose p = randomPose(g);
+        const Eigen::Matrix3d E = p.E();
+        EXPECT_NEAR(E.norm(), std::sqrt(2.0), 1e-12);
+        EXPECT_NEAR(E.determinant(), 0.0, 1e-12);
+        // 2 E E^T E - trace(E E^T) E = 0 (the trace constraint).
+        const Eigen::Matrix3d C = 2 * E * E.transpose() * E - (E * E.transpose()).trace() * E;
+        EXPECT_LT(C.norm(), 1e-12);
+        EXPECT_LT((E.transpose() * p.t()).norm(), 1e-12); // t is the left epipole
+    }
+}
+
+TEST(EssentialParameterisation, JacobianMatchesFiniteDifferences)
+{
+    std::mt19937_64 g(5);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    const double h = 1e-6;
+    double worst = 0.0;
+    for (int trial = 0; trial < 200; ++trial) {
+        const EssentialPose p = randomPose(g);
+        const double x1 = u(g), y1 = u(g), x2 = u(g), y2 = u(g);
+        double J[5];
+        const double r = residualAndJacobian(ResidualFrame(p), x1, y1, x2, y2, J);
+        EXPECT_NEAR(r, algebraicResidual(p.E(), x1, y1, x2, y2), 1e-14);
+        for (int k = 0; k < 5; ++k) {
+            Vector5d d = Vector5d::Zero();
+            d[k] = h;
+            EssentialPose plus = p, minus = p;
+            plus.update(d);
+            minus.update(-d);
+            const double numeric = (algebraicResidual(plus.E(), x1, y1, x2, y2) -
+                                    algebraicResidual(minus.E(), x1, y1, x2, y2)) /
+                                   (2 * h);
+            // Central differences: truncation O(h^2) ~ 1e-12, round-off ~ 1e-16 / h = 1e-10.
+            EXPECT_NEAR(J[k], numeric, 1e-8) << "parameter " << k + 1 << " trial " << trial;
+            worst = std::max(worst, std::abs(J[k] - numeric));
+        }
+    }
+    RecordProperty("worst_jacobian_error", std::to_string(worst));
+}
+
+TEST(EssentialParameterisation, UpdateKeepsTheManifold)
+{
+    std::mt19937_64 g(6);
+    EssentialPose p = randomPose(g);
+    std::normal_distribution<double> n(0.0, 0.3);
+    for (int i = 0; i < 1000; ++i) {
+        Vector5d d;
+        for (int k = 0; k < 5; ++k) d[k] = n(g);
+        p.update(d);
+    }
+    EXPECT_LT((p.R.transpose() * p.R - Eigen::Matrix3d::Identity()).norm(), 1e-12);
+    EXPECT_LT((p.Rt.transpose() * p.Rt - Eigen::Matrix3d::Identity()).norm(), 1e-12);
+    EXPECT_NEAR(p.t().norm(), 1.0, 1e-12);
+}
+
+TEST(EssentialDecomposition, PoseFromEssentialReproducesE)
+{
+    std::mt19937_64 g(7);
+    for (int i = 0; i < 100; ++i) {
+        const EssentialPose truth = randomPose(g);
+        const Eigen::Matrix3d E = truth.E() * 3.7; // any scale
+        EssentialPose p;
+        ASSERT_TRUE(poseFromEssential(E, p));
+        EXPECT_LT((canonicalEssential(p.E()) - canonicalEssential(E)).norm(), 1e-10);
+        EXPECT_NEAR(p.Rt.determinant(), 1.0, 1e-12);
+    }
+    EssentialPose p;
+    EXPECT_FALSE(poseFromEssential(Eigen::Matrix3d::Zero(), p));
+    Eigen::Matrix3d bad = Eigen::Matrix3d::Identity();
+    bad(0, 0) = std::nan("");
+    EXPECT_FALSE(poseFromEssential(bad, p));
+}
+
+TEST(Sampson, IsTheFirstOrderGeometricError)
+{
+    // A point moved by d off its epipolar line in view 2 only: its distance to that line is d, so
+    // r = d |(E q1)_xy| and the Sampson distance r / sqrt(|(E q1)_xy|^2 + |(E^T q2)_xy|^2) lies in
+    // (0, d], with equality when the view-1 term vanishes.
+    std::mt19937_64 g(8);
+    std::uniform_real_distribution<double> u(-0.5, 0.5);
+    for (int i = 0; i < 100; ++i) {
+        const Eigen::Matrix3d E = randomPose(g).E();
+        const Eigen::Vector3d q1(u(g), u(g), 1.0);
+        const Eigen::Vector3d l = E * q1; // epipolar line in view 2
+        const double d = 1e-3;
+        // a point of the line, moved by d along its normal
+        Eigen::Vector3d q2(u(g), 0.0, 1.0);
+        q2.y() = -(l.x() * q2.x() + l.z()) / l.y();
+        q2.head<2>() += d * l.head<2>().normalized();
+        const double s = std::sqrt(sampsonSquared(E, q1.x(), q1.y(), q2.x(), q2.y()));
+        EXPECT_LE(s, d * (1 + 1e-6));
+        EXPECT_GT(s, 0.0);
+    }
+}
+
+} // namespace

@@ -42,33 +42,52 @@ Mat toMat(const Matx33d& E)
     return Mat(E, true);
 }
 
-/** Iterative solvers return one solution per call, from a random start; to list the solutions of
-a five-point problem (what cv::findEssentialMat returns for exactly five points) they are restarted
-this many times and the distinct results kept. Measured on noise-free random problems: with gn the
-set of distinct solutions stops growing after about 30 starts, and 60 leaves margin. */
-constexpr int kFivePointStarts = 60;
+/** To list the solutions of a five-point problem (what cv::findEssentialMat returns for exactly
+five points) a solver that finds one root per call (success rate below 1) is run on this many
+rotated copies of the problem: view 1's points are rotated by a random Q (q1' ~ Q q1), which moves
+the solver's start relative to the data, and each solution E' of the copy maps back to E = E' Q.
+Measured with gn on 200 noise-free problems of the paper's protocol (cv::findEssentialMat finds
+4.70 real roots on average there, the true one always): 30 / 60 / 120 copies find 4.21 / 4.53 /
+4.67 roots and the true E in 192 / 197 / 199 problems, in 0.16 / 0.19 / 0.31 ms per call. */
+constexpr int kFivePointStarts = 120;
+
+/** Largest rotation of the copies: the solvers start at R = I, so this spreads their starts over
+rotations up to this angle. */
+constexpr double kFivePointMaxAngle = 60.0 * CV_PI / 180.0;
 
 /** Two solutions closer than this (essential matrices of norm sqrt(2), up to sign) are the same
-root: converged solutions agree to ~1e-10, distinct roots differ by far more than 1e-6. */
-constexpr double kSameSolution = 1e-6;
+root: converged solutions agree to ~1e-7 (residuals below 1e-7), distinct roots differ by far more. */
+constexpr double kSameSolution = 1e-4;
 
 Mat solveExactlyFive(const Problem& problem, EssentialSolver& solver, RNG& rng,
-                     EssentialReport* report)
+                     EssentialReport& report)
 {
     const int starts = solver.successRate() >= 1.0 ? 1 : kFivePointStarts;
     std::vector<Matx33d> buffer(static_cast<size_t>(solver.maxSolutions()));
     std::vector<Eigen::Matrix3d> found;
-    const int k = solver.sampleSize();
+    std::vector<Point2d> rotated(5);
     for (int s = 0; s < starts; ++s) {
-        const int count = solver.solve(problem.p1.data(), problem.p2.data(), rng, buffer.data());
-        if (report) {
-            ++report->hypothesesGenerated;
-            report->hypothesesConverged += std::max(0, count);
+        Matx33d Q = Matx33d::eye();
+        if (s > 0) {
+            Vec3d axis(rng.gaussian(1.0), rng.gaussian(1.0), rng.gaussian(1.0));
+            axis *= rng.uniform(0.0, kFivePointMaxAngle) / std::max(norm(axis), 1e-12);
+            Rodrigues(axis, Q);
         }
+        bool usable = true;
+        for (int i = 0; i < 5; ++i) {
+            const Vec3d q = Q * Vec3d(problem.p1[i].x, problem.p1[i].y, 1.0);
+            usable &= q[2] > 0.3; // keep the rotated coordinates bounded
+            rotated[i] = Point2d(q[0] / q[2], q[1] / q[2]);
+        }
+        if (!usable) continue;
+        const int count = solver.solve(rotated.data(), problem.p2.data(), rng, buffer.data());
+        ++report.hypothesesGenerated;
+        report.hypothesesConverged += std::max(0, count);
         for (int h = 0; h < std::min(count, static_cast<int>(buffer.size())); ++h) {
+            const Matx33d Eq = buffer[h] * Q;
             Eigen::Matrix3d E;
             for (int i = 0; i < 3; ++i)
-                for (int j = 0; j < 3; ++j) E(i, j) = buffer[h](i, j);
+                for (int j = 0; j < 3; ++j) E(i, j) = Eq(i, j);
             if (!E.allFinite() || !(E.norm() > 0)) continue;
             const Eigen::Matrix3d C = geometry::canonicalEssential(E);
             bool seen = false;
@@ -76,12 +95,12 @@ Mat solveExactlyFive(const Problem& problem, EssentialSolver& solver, RNG& rng,
             if (!seen && found.size() < 10) found.push_back(C);
         }
     }
-    (void)k;
     if (found.empty()) return Mat();
     Mat stacked(3 * static_cast<int>(found.size()), 3, CV_64F);
     for (size_t s = 0; s < found.size(); ++s)
         for (int i = 0; i < 3; ++i)
-            for (int j = 0; j < 3; ++j) stacked.at<double>(3 * static_cast<int>(s) + i, j) = found[s](i, j);
+            for (int j = 0; j < 3; ++j)
+                stacked.at<double>(3 * static_cast<int>(s) + i, j) = found[s](i, j);
     return stacked;
 }
 
@@ -107,7 +126,7 @@ Mat estimate(const Problem& problem, const EssentialParams& params, OutputArray 
     // Exactly a minimal set: return every distinct solution, stacked, as OpenCV does.
     if (n == solver->sampleSize() && n == 5) {
         const int64 t0 = getTickCount();
-        Mat stacked = solveExactlyFive(problem, *solver, rng, &rep);
+        Mat stacked = solveExactlyFive(problem, *solver, rng, rep);
         rep.timeSearchMs = msSince(t0);
         if (!stacked.empty()) std::fill(inliers.begin(), inliers.end(), uchar(1));
         rep.success = !stacked.empty();

@@ -26,7 +26,9 @@ Differences from `cv::findEssentialMat` that a caller may notice:
 - invalid input (fewer than 5 points, non-finite coordinates, a singular camera matrix, prob outside
   (0, 1), ...) raises cv::Exception naming the argument, where OpenCV may assert, crash or return
   garbage;
-- with `RANSAC` the returned E is refined on all inliers (set EssentialParams::refine = false in the
+- `maxIters` keeps OpenCV's meaning of a confidence budget: an iterative solver that solves only a
+  fraction s of outlier-free samples may draw maxIters / s samples (see EssentialParams::maxIters);
+- the returned E is refined on all points by IRLS (set EssentialParams::refine = false in the
   module's own overload to skip this), and the mask is that of the refined E;
 - the USAC method flags (`USAC_DEFAULT`, `USAC_MAGSAC`, ...) and the UsacParams overload currently run
   the same adaptive MSAC engine, honouring confidence, threshold, maxIterations and
@@ -49,7 +51,8 @@ single-channel or N x 1 two-channel Mat, CV_32F or CV_64F.
 @param method `RANSAC` or `LMEDS` (the USAC flags are accepted, see the module description).
 @param prob confidence in (0, 1).
 @param threshold maximum Sampson distance, in pixels, of an inlier (RANSAC only); > 0.
-@param maxIters maximum number of RANSAC iterations; > 0.
+@param maxIters maximum number of RANSAC iterations in OpenCV's units (see EssentialParams::maxIters);
+> 0.
 @param mask output N x 1 CV_8U: 1 for the inliers of the returned E, 0 otherwise.
 @return E as a 3 x 3 CV_64F Mat; with exactly five points, all the distinct solutions found, stacked
 as a 3n x 3 Mat; an empty Mat (and an all-zero mask) when no essential matrix is found.

@@ -37,7 +37,11 @@ struct CV_EXPORTS EssentialParams
     units by the mean focal length (fx + fy) / 2, exactly as `cv::findEssentialMat`. Must be > 0. */
     double threshold = 1.0;
 
-    /** Cap on the number of samples drawn (RANSAC iterations). Must be > 0. */
+    /** Iteration cap in OpenCV's units. Must be > 0. OpenCV's cap counts samples of a direct
+    5-point solver, each of which solves an outlier-free sample; an iterative solver that reaches
+    the true model on a fraction s of outlier-free samples (EssentialSolver::successRate(), 0.35 for
+    gn) may draw up to maxIters / s samples, so that the confidence reached at the cap is the same.
+    Those samples are still several times cheaper than OpenCV's (see docs/SOLVERS.md). */
     int maxIters = 1000;
 
     /** Seed of the random generator: the same seed and input give the same result. */
@@ -64,7 +68,7 @@ struct CV_EXPORTS EssentialReport
 
     int numPoints = 0;            //!< correspondences given
     int inliers = 0;              //!< non-zero entries of the returned mask
-    int iterations = 0;           //!< samples drawn (RANSAC iterations)
+    int iterations = 0;           //!< samples drawn (at most maxIters / solver success rate)
     int hypothesesGenerated = 0;  //!< solver calls made (one per sample)
     int hypothesesConverged = 0;  //!< essential matrices the solver returned
     int hypothesesScored = 0;     //!< essential matrices scored against the data

@@ -12,6 +12,7 @@
 #include "problem.hpp"
 #include "ransac/msac_score.hpp"
 #include "ransac/search.hpp"
+#include "ransac/support_test.hpp"
 #include "refine/irls_refinement.hpp"
 
 #include <opencv2/calib3d.hpp>
@@ -176,7 +177,9 @@ Mat estimate(const Problem& problem, const EssentialParams& params, OutputArray 
     }
     rep.inliers = ransac::inlierMask(E, problem, found.threshold, inliers.data());
     rep.timeRefineMs = msSince(tRefine);
-    if (rep.inliers < 5) {
+    if (rep.inliers < 5 ||
+        !ransac::supportIsSignificant(E, problem, found.threshold, rep.inliers, solver->sampleSize(),
+                                      std::max(1, found.hypothesesScored))) {
         std::fill(inliers.begin(), inliers.end(), uchar(0));
         rep.inliers = 0;
         writeMask(mask, inliers);

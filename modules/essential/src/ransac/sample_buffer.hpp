@@ -30,7 +30,9 @@ struct SampleBuffer
     {
     }
 
-    /** Draws a uniform sample and runs the solver on it; returns the number of solutions. */
+    /** Draws a uniform sample and runs the solver on it; returns the number of solutions. A sample
+    with two coincident points in either view is degenerate (it constrains E less than its size
+    says, and all-identical input would otherwise "fit" anything): it is not solved. */
     int drawAndSolve(const Problem& problem, EssentialSolver& solver, RNG& rng)
     {
         drawUniformSample(rng, problem.size(), sampleSize, indices.data());
@@ -38,8 +40,21 @@ struct SampleBuffer
             x1[i] = problem.p1[indices[i]];
             x2[i] = problem.p2[indices[i]];
         }
+        if (hasCoincidentPoints()) return 0;
         const int count = solver.solve(x1.data(), x2.data(), rng, solutions.data());
         return std::max(0, std::min(count, static_cast<int>(solutions.size())));
+    }
+
+    /** Normalised points closer than 1e-9 (about 1e-6 pixel) count as the same point. */
+    bool hasCoincidentPoints() const
+    {
+        const double eps2 = 1e-18;
+        for (int i = 0; i < sampleSize; ++i)
+            for (int j = 0; j < i; ++j) {
+                const Point2d d1 = x1[i] - x1[j], d2 = x2[i] - x2[j];
+                if (d1.dot(d1) < eps2 || d2.dot(d2) < eps2) return true;
+            }
+        return false;
     }
 };
 

@@ -1,0 +1,79 @@
+// This file is part of opencv_essential, licensed under the Apache License, Version 2.0.
+// See the LICENSE file at the top of the source tree.
+
+#include "ransac/support_test.hpp"
+
+#include "geometry/sampson.hpp"
+
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <cmath>
+
+namespace cv {
+namespace essential {
+namespace ransac {
+
+namespace {
+
+/** Shifts used to build wrong pairs: co-prime-ish offsets so that a data set sorted in some order
+does not pair neighbours. 3 x N wrong pairs give the rate to about +-sqrt(p / 3N). */
+constexpr int kShifts[] = {1, 7, 31};
+
+/** Significance level of the test before the Bonferroni division by the number of hypotheses. */
+constexpr double kAlpha = 0.01;
+
+/** Smallest m with P(Poisson(lambda) >= m) <= level. */
+int poissonQuantile(double lambda, double level)
+{
+    double pmf = std::exp(-lambda); // P(X = 0)
+    double tail = 1.0;              // P(X >= 0)
+    int m = 0;
+    while (tail > level && m < 100000) {
+        tail -= pmf; // now P(X >= m + 1)
+        ++m;
+        pmf *= lambda / m;
+    }
+    return m;
+}
+
+} // namespace
+
+double chanceInlierRate(const Matx33d& E, const Problem& problem, double threshold)
+{
+    const int n = problem.size();
+    if (n < 2) return 0.0;
+    Eigen::Matrix3d Em;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) Em(i, j) = E(i, j);
+    const double t2 = threshold * threshold;
+    long hits = 0, pairs = 0;
+    for (int shift : kShifts) {
+        const int s = shift % n;
+        if (s == 0) continue;
+        for (int i = 0; i < n; ++i) {
+            const int j = (i + s) % n;
+            hits += geometry::sampsonSquared(Em, problem.x1[i], problem.y1[i], problem.x2[j],
+                                             problem.y2[j]) <= t2;
+            ++pairs;
+        }
+    }
+    // One pseudo-hit keeps the rate positive when no wrong pair happened to fit.
+    return (hits + 1.0) / (pairs + 1.0);
+}
+
+bool supportIsSignificant(const Matx33d& E, const Problem& problem, double threshold, int inliers,
+                          int sampleSize, int hypotheses)
+{
+    const int n = problem.size();
+    const int others = n - sampleSize;
+    if (others <= 0) return true;
+    const double lambda = others * chanceInlierRate(E, problem, threshold);
+    const int needed = poissonQuantile(lambda, kAlpha / std::max(1, hypotheses));
+    if (needed > others) return true; // no power: cannot tell luck from geometry
+    return inliers - sampleSize >= needed;
+}
+
+} // namespace ransac
+} // namespace essential
+} // namespace cv

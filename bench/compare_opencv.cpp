@@ -50,7 +50,8 @@ std::vector<std::string> split(const std::string& s)
     std::vector<std::string> out;
     std::stringstream ss(s);
     std::string item;
-    while (std::getline(ss, item, ',')) out.push_back(item);
+    while (std::getline(ss, item, ','))
+        out.push_back(item);
     return out;
 }
 
@@ -59,14 +60,20 @@ Args parse(int argc, char** argv)
     Args a;
     for (int i = 1; i + 1 < argc; i += 2) {
         const std::string k = argv[i], v = argv[i + 1];
-        if (k == "--n") a.n = std::atoi(v.c_str());
-        else if (k == "--problems") a.problems = std::atoi(v.c_str());
-        else if (k == "--solver") a.solver = v;
-        else if (k == "--seed") a.seed = std::strtoull(v.c_str(), nullptr, 10);
-        else if (k == "--opencv-methods") a.opencvMethods = split(v);
+        if (k == "--n")
+            a.n = std::atoi(v.c_str());
+        else if (k == "--problems")
+            a.problems = std::atoi(v.c_str());
+        else if (k == "--solver")
+            a.solver = v;
+        else if (k == "--seed")
+            a.seed = std::strtoull(v.c_str(), nullptr, 10);
+        else if (k == "--opencv-methods")
+            a.opencvMethods = split(v);
         else if (k == "--ratios") {
             a.ratios.clear();
-            for (const auto& r : split(v)) a.ratios.push_back(std::atof(r.c_str()));
+            for (const auto& r : split(v))
+                a.ratios.push_back(std::atof(r.c_str()));
         } else {
             std::fprintf(stderr, "unknown option %s\n", k.c_str());
             std::exit(2);
@@ -122,12 +129,14 @@ int main(int argc, char** argv)
     cv::setNumThreads(1);
     std::printf("N = %d, %d problems per ratio, solver %s, one thread\n\n", args.n, args.problems,
                 args.solver.c_str());
-    std::printf("| inlier ratio | method | reliability (1/3 deg) | reliability (2/5 deg) | median ms "
-                "| ratio to ours |\n|---|---|---|---|---|---|\n");
+    std::printf(
+        "| inlier ratio | method | reliability (1/3 deg) | reliability (2/5 deg) | median ms "
+        "| ratio to ours |\n|---|---|---|---|---|---|\n");
     for (double ratio : args.ratios) {
         std::vector<Row> rows;
         rows.push_back({"findEssentialMatIter (" + args.solver + ")", {}});
-        for (const auto& m : args.opencvMethods) rows.push_back({"cv::findEssentialMat " + m, {}});
+        for (const auto& m : args.opencvMethods)
+            rows.push_back({"cv::findEssentialMat " + m, {}});
         for (int p = 0; p < args.problems; ++p) {
             essential_test::SceneConfig cfg;
             cfg.numPoints = args.n;
@@ -154,7 +163,8 @@ int main(int argc, char** argv)
         }
         const double oursMs = median([&] {
             std::vector<double> v;
-            for (const auto& o : rows[0].outcomes) v.push_back(o.ms);
+            for (const auto& o : rows[0].outcomes)
+                v.push_back(o.ms);
             return v;
         }());
         for (const Row& row : rows) {

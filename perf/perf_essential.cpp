@@ -48,8 +48,14 @@ void solverPerCall(benchmark::State& state, const char* name)
         benchmark::Counter(double(solved) / double(state.iterations()));
 }
 
-void BM_Solver_gn(benchmark::State& state) { solverPerCall(state, "gn"); }
-void BM_Solver_lm(benchmark::State& state) { solverPerCall(state, "lm"); }
+void BM_Solver_gn(benchmark::State& state)
+{
+    solverPerCall(state, "gn");
+}
+void BM_Solver_lm(benchmark::State& state)
+{
+    solverPerCall(state, "lm");
+}
 BENCHMARK(BM_Solver_gn);
 BENCHMARK(BM_Solver_lm);
 
@@ -100,15 +106,21 @@ void BM_OpenCV_FindEssentialMat(benchmark::State& state)
     for (auto _ : state) {
         const auto& s = problems[i++ % problems.size()];
         cv::Mat mask, R, t;
-        cv::Mat E = cv::findEssentialMat(s.px1, s.px2, cv::Mat(s.K), cv::RANSAC, 0.999, 1.0, 1000,
-                                         mask);
+        cv::Mat E =
+            cv::findEssentialMat(s.px1, s.px2, cv::Mat(s.K), cv::RANSAC, 0.999, 1.0, 1000, mask);
         if (E.rows == 3) cv::recoverPose(E, s.px1, s.px2, cv::Mat(s.K), R, t, mask);
     }
 }
 
-BENCHMARK(BM_FindEssentialMatIter)->Args({500, 90})->Args({500, 50})->Args({500, 30})
+BENCHMARK(BM_FindEssentialMatIter)
+    ->Args({500, 90})
+    ->Args({500, 50})
+    ->Args({500, 30})
     ->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_OpenCV_FindEssentialMat)->Args({500, 90})->Args({500, 50})->Args({500, 30})
+BENCHMARK(BM_OpenCV_FindEssentialMat)
+    ->Args({500, 90})
+    ->Args({500, 50})
+    ->Args({500, 30})
     ->Unit(benchmark::kMillisecond);
 
 } // namespace

@@ -28,10 +28,10 @@ struct SceneConfig
     double maxRotationDeg = 35.0; //!< rotation angle uniform in [0, max], axis uniform
     double minTranslation = 0.1;  //!< baseline length uniform in [min, max], direction uniform
     double maxTranslation = 1.0;
-    double minDepth = 1.0;        //!< inverse depth uniform in [1 / maxDepth, 1 / minDepth]
+    double minDepth = 1.0; //!< inverse depth uniform in [1 / maxDepth, 1 / minDepth]
     double maxDepth = 1000.0;
-    double halfFov = 1.0;         //!< tan(half field of view): 1 for 90 degrees
-    double focal = 500.0;         //!< pixel focal length of the camera used for pixel coordinates
+    double halfFov = 1.0; //!< tan(half field of view): 1 for 90 degrees
+    double focal = 500.0; //!< pixel focal length of the camera used for pixel coordinates
     double cx = 500.0, cy = 500.0;
 };
 
@@ -40,10 +40,10 @@ struct SyntheticScene
     std::vector<cv::Point2d> x1, x2;   //!< normalised coordinates
     std::vector<cv::Point2d> px1, px2; //!< pixel coordinates with camera K
     std::vector<bool> inlier;
-    cv::Matx33d R;  //!< X2 = R X1 + t
-    cv::Vec3d t;    //!< unit translation direction
+    cv::Matx33d R; //!< X2 = R X1 + t
+    cv::Vec3d t;   //!< unit translation direction
     double baseline = 0.0;
-    cv::Matx33d E;  //!< [t]x R, Frobenius norm sqrt(2)
+    cv::Matx33d E; //!< [t]x R, Frobenius norm sqrt(2)
     cv::Matx33d K;
     int numInliers = 0;
 };

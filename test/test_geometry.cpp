@@ -137,7 +137,8 @@ TEST(EssentialParameterisation, UpdateKeepsTheManifold)
     std::normal_distribution<double> n(0.0, 0.3);
     for (int i = 0; i < 1000; ++i) {
         Vector5d d;
-        for (int k = 0; k < 5; ++k) d[k] = n(g);
+        for (int k = 0; k < 5; ++k)
+            d[k] = n(g);
         p.update(d);
     }
     EXPECT_LT((p.R.transpose() * p.R - Eigen::Matrix3d::Identity()).norm(), 1e-12);

@@ -40,7 +40,8 @@ Rates measure(cv::essential::EssentialSolver& solver, int trials, double noise, 
         if (solver.solve(scene.x1.data(), scene.x2.data(), rng, E) != 1) continue;
         ++converged;
         for (int i = 0; i < 5; ++i) {
-            const cv::Vec3d q1(scene.x1[i].x, scene.x1[i].y, 1), q2(scene.x2[i].x, scene.x2[i].y, 1);
+            const cv::Vec3d q1(scene.x1[i].x, scene.x1[i].y, 1),
+                q2(scene.x2[i].x, scene.x2[i].y, 1);
             const double r = q2.dot(E[0] * q1);
             EXPECT_LT(r * r, 1e-12) << "returned E does not fit its sample (problem " << t << ")";
         }
@@ -97,7 +98,8 @@ TEST(Solvers, DegenerateSamplesGiveNoSolution)
         // A rank-1 system may still drive the single distinct residual to zero; any E returned
         // must then fit it. What must not happen is a crash or a non-finite matrix.
         if (n == 1) {
-            for (int i = 0; i < 9; ++i) EXPECT_TRUE(std::isfinite(E[0].val[i])) << name;
+            for (int i = 0; i < 9; ++i)
+                EXPECT_TRUE(std::isfinite(E[0].val[i])) << name;
         }
         EXPECT_GE(n, 0);
         EXPECT_LE(n, 1);

@@ -57,7 +57,8 @@ rotations up to this angle. */
 constexpr double kFivePointMaxAngle = 60.0 * CV_PI / 180.0;
 
 /** Two solutions closer than this (essential matrices of norm sqrt(2), up to sign) are the same
-root: converged solutions agree to ~1e-7 (residuals below 1e-7), distinct roots differ by far more. */
+root: converged solutions agree to ~1e-7 (residuals below 1e-7), distinct roots differ by far more.
+*/
 constexpr double kSameSolution = 1e-4;
 
 Mat solveExactlyFive(const Problem& problem, EssentialSolver& solver, RNG& rng,
@@ -88,11 +89,13 @@ Mat solveExactlyFive(const Problem& problem, EssentialSolver& solver, RNG& rng,
             const Matx33d Eq = buffer[h] * Q;
             Eigen::Matrix3d E;
             for (int i = 0; i < 3; ++i)
-                for (int j = 0; j < 3; ++j) E(i, j) = Eq(i, j);
+                for (int j = 0; j < 3; ++j)
+                    E(i, j) = Eq(i, j);
             if (!E.allFinite() || !(E.norm() > 0)) continue;
             const Eigen::Matrix3d C = geometry::canonicalEssential(E);
             bool seen = false;
-            for (const Eigen::Matrix3d& F : found) seen |= (C - F).norm() < kSameSolution;
+            for (const Eigen::Matrix3d& F : found)
+                seen |= (C - F).norm() < kSameSolution;
             if (!seen && found.size() < 10) found.push_back(C);
         }
     }
@@ -134,7 +137,8 @@ Mat estimate(const Problem& problem, const EssentialParams& params, OutputArray 
         rep.inliers = rep.success ? n : 0;
         if (rep.success) {
             for (int i = 0; i < 3; ++i)
-                for (int j = 0; j < 3; ++j) rep.E(i, j) = stacked.at<double>(i, j);
+                for (int j = 0; j < 3; ++j)
+                    rep.E(i, j) = stacked.at<double>(i, j);
         }
         writeMask(mask, inliers);
         rep.timeTotalMs = msSince(start);
@@ -178,8 +182,8 @@ Mat estimate(const Problem& problem, const EssentialParams& params, OutputArray 
     rep.inliers = ransac::inlierMask(E, problem, found.threshold, inliers.data());
     rep.timeRefineMs = msSince(tRefine);
     if (rep.inliers < 5 ||
-        !ransac::supportIsSignificant(E, problem, found.threshold, rep.inliers, solver->sampleSize(),
-                                      std::max(1, found.hypothesesScored))) {
+        !ransac::supportIsSignificant(E, problem, found.threshold, rep.inliers,
+                                      solver->sampleSize(), std::max(1, found.hypothesesScored))) {
         std::fill(inliers.begin(), inliers.end(), uchar(0));
         rep.inliers = 0;
         writeMask(mask, inliers);
@@ -192,8 +196,8 @@ Mat estimate(const Problem& problem, const EssentialParams& params, OutputArray 
     if (report && params.recoverPose) {
         const int64 tPose = getTickCount();
         pose::PoseResult pr;
-        if (pose::recoverPoseNormalised(E, problem.p1.data(), problem.p2.data(), n,
-                                        inliers.data(), nullptr, pr)) {
+        if (pose::recoverPoseNormalised(E, problem.p1.data(), problem.p2.data(), n, inliers.data(),
+                                        nullptr, pr)) {
             rep.R = pr.R;
             rep.t = pr.t;
             rep.pointsInFront = pr.inFront;
@@ -229,8 +233,8 @@ Mat estimateWithCamera(InputArray points1, InputArray points2, const Matx33d& K,
     std::vector<Point2d> p2 = readPoints(points2, "points2");
     checkPointSets(p1, p2, 5);
     const double meanFocal = 0.5 * (std::abs(K(0, 0)) + std::abs(K(1, 1)));
-    Problem problem = makeProblem(normalisePoints(p1, K), normalisePoints(p2, K),
-                                  params.threshold / meanFocal);
+    Problem problem =
+        makeProblem(normalisePoints(p1, K), normalisePoints(p2, K), params.threshold / meanFocal);
     return estimate(problem, params, mask, report, start);
 }
 
@@ -320,8 +324,8 @@ Mat findEssentialMatIter(InputArray points1, InputArray points2, InputArray came
                          OutputArray mask, const UsacParams& usac)
 {
     const int64 start = getTickCount();
-    EssentialParams params = dropInParams(RANSAC, usac.confidence, usac.threshold,
-                                          usac.maxIterations);
+    EssentialParams params =
+        dropInParams(RANSAC, usac.confidence, usac.threshold, usac.maxIterations);
     params.seed = static_cast<uint64>(static_cast<unsigned>(usac.randomGeneratorState));
     return estimateTwoCameras(points1, points2, cameraMatrix1, distCoeffs1, cameraMatrix2,
                               distCoeffs2, params, mask, start);

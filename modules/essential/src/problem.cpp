@@ -27,12 +27,13 @@ std::vector<Point2d> readPoints(InputArray points, const char* name)
     Mat m = points.getMat();
     const int depth = m.depth();
     if (depth != CV_32F && depth != CV_64F)
-        badArg(arg + " must hold CV_32F or CV_64F coordinates (got depth " +
-               std::to_string(depth) + ")");
+        badArg(arg + " must hold CV_32F or CV_64F coordinates (got depth " + std::to_string(depth) +
+               ")");
     const int n = m.checkVector(2);
     if (n < 0)
-        badArg(arg + " must be a vector of 2D points, an N x 2 one-channel or an N x 1 two-channel "
-                     "matrix (got " +
+        badArg(arg +
+               " must be a vector of 2D points, an N x 2 one-channel or an N x 1 two-channel "
+               "matrix (got " +
                std::to_string(m.rows) + " x " + std::to_string(m.cols) + " with " +
                std::to_string(m.channels()) + " channels)");
     Mat converted;
@@ -65,8 +66,7 @@ Matx33d readCameraMatrix(InputArray cameraMatrix, const char* name)
     if (m.rows != 3 || m.cols != 3 || m.channels() != 1)
         badArg(arg + " must be a 3 x 3 one-channel matrix (got " + std::to_string(m.rows) + " x " +
                std::to_string(m.cols) + " with " + std::to_string(m.channels()) + " channels)");
-    if (m.depth() != CV_32F && m.depth() != CV_64F)
-        badArg(arg + " must be CV_32F or CV_64F");
+    if (m.depth() != CV_32F && m.depth() != CV_64F) badArg(arg + " must be CV_32F or CV_64F");
     Matx33d K;
     Mat(m).convertTo(Mat(3, 3, CV_64F, K.val), CV_64F);
     for (int i = 0; i < 9; ++i)
@@ -75,8 +75,7 @@ Matx33d readCameraMatrix(InputArray cameraMatrix, const char* name)
     if (std::abs(K(2, 0)) > 1e-9 || std::abs(K(2, 1)) > 1e-9 || std::abs(K(2, 2) - 1.0) > 1e-9)
         badArg(arg + " must have a last row of 0 0 1");
     const double det = determinant(K);
-    if (!(std::abs(det) > 1e-12 * std::abs(K(0, 0) * K(1, 1))))
-        badArg(arg + " is singular");
+    if (!(std::abs(det) > 1e-12 * std::abs(K(0, 0) * K(1, 1)))) badArg(arg + " is singular");
     return K;
 }
 

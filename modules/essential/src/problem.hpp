@@ -32,8 +32,7 @@ cv::Exception for an empty or wrongly shaped array, another depth, or non-finite
 std::vector<Point2d> readPoints(InputArray points, const char* name);
 
 /** Checks that the two point sets have the same size and at least `minPoints` points. */
-void checkPointSets(const std::vector<Point2d>& p1, const std::vector<Point2d>& p2,
-                    int minPoints);
+void checkPointSets(const std::vector<Point2d>& p1, const std::vector<Point2d>& p2, int minPoints);
 
 /** Reads a 3 x 3 camera matrix (CV_32F or CV_64F, finite, fx and fy non-zero, last row 0 0 1,
 invertible). */

@@ -30,8 +30,8 @@ Differences from `cv::findEssentialMat` that a caller may notice:
   fraction s of outlier-free samples may draw maxIters / s samples (see EssentialParams::maxIters);
 - the returned E is refined on all points by IRLS (set EssentialParams::refine = false in the
   module's own overload to skip this), and the mask is that of the refined E;
-- the USAC method flags (`USAC_DEFAULT`, `USAC_MAGSAC`, ...) and the UsacParams overload currently run
-  the same adaptive MSAC engine, honouring confidence, threshold, maxIterations and
+- the USAC method flags (`USAC_DEFAULT`, `USAC_MAGSAC`, ...) and the UsacParams overload currently
+run the same adaptive MSAC engine, honouring confidence, threshold, maxIterations and
   randomGeneratorState; the other UsacParams fields are not used yet.
 */
 
@@ -51,8 +51,8 @@ single-channel or N x 1 two-channel Mat, CV_32F or CV_64F.
 @param method `RANSAC` or `LMEDS` (the USAC flags are accepted, see the module description).
 @param prob confidence in (0, 1).
 @param threshold maximum Sampson distance, in pixels, of an inlier (RANSAC only); > 0.
-@param maxIters maximum number of RANSAC iterations in OpenCV's units (see EssentialParams::maxIters);
-> 0.
+@param maxIters maximum number of RANSAC iterations in OpenCV's units (see
+EssentialParams::maxIters); > 0.
 @param mask output N x 1 CV_8U: 1 for the inliers of the returned E, 0 otherwise.
 @return E as a 3 x 3 CV_64F Mat; with exactly five points, all the distinct solutions found, stacked
 as a 3n x 3 Mat; an empty Mat (and an all-zero mask) when no essential matrix is found.
@@ -97,8 +97,8 @@ sampling with MSAC scoring and a final IRLS refinement).
 */
 CV_EXPORTS Mat findEssentialMatIter(InputArray points1, InputArray points2,
                                     InputArray cameraMatrix1, InputArray cameraMatrix2,
-                                    InputArray distCoeffs1, InputArray distCoeffs2, OutputArray mask,
-                                    const UsacParams& params);
+                                    InputArray distCoeffs1, InputArray distCoeffs2,
+                                    OutputArray mask, const UsacParams& params);
 
 /** @brief The module's own overload: every setting, and an optional report.
 
@@ -118,9 +118,9 @@ CV_EXPORTS Mat findEssentialMatIter(InputArray points1, InputArray points2, Inpu
 
 Decomposes E by SVD into its two rotations and the translation direction, and chooses among the four
 (R, +-t) candidates the one that puts the most correspondences in front of both cameras. Unlike
-OpenCV 4.6, which ignores points farther than 50 baselines (so that in a deep scene seen from a short
-baseline no point counts and the sign of t is arbitrary), every point with positive depth in both
-views counts.
+OpenCV 4.6, which ignores points farther than 50 baselines (so that in a deep scene seen from a
+short baseline no point counts and the sign of t is arbitrary), every point with positive depth in
+both views counts.
 
 @param E essential matrix, 3 x 3.
 @param points1 points of the first image (layouts as findEssentialMatIter()).

@@ -22,8 +22,8 @@ non-finite largest singular value. */
 bool decomposeEssential(const Eigen::Matrix3d& E, Eigen::Matrix3d& R1, Eigen::Matrix3d& R2,
                         Eigen::Vector3d& t);
 
-/** A 5-DOF pose (R, Rt) with [t]x R proportional to E (up to sign), for refining an essential matrix
-that came from any solver. Returns false if E cannot be decomposed. */
+/** A 5-DOF pose (R, Rt) with [t]x R proportional to E (up to sign), for refining an essential
+matrix that came from any solver. Returns false if E cannot be decomposed. */
 bool poseFromEssential(const Eigen::Matrix3d& E, EssentialPose& pose);
 
 /** E scaled to Frobenius norm sqrt(2) (that of [t]x R with |t| = 1), with the sign chosen so that

@@ -4,8 +4,9 @@
 // The minimal 5-DOF parameterisation of an essential matrix of Rosten et al. (section 2):
 //   E = [t]x R,  t = Rt [1 0 0]^T,
 // R updated by left-multiplied exponential-map increments exp(d1 G1 + d2 G2 + d3 G3) R, Rt by
-// right-multiplied increments Rt exp(d4 G1 + d5 G2). The residual of a correspondence (q1, q2) is the
-// algebraic epipolar error r = q2^T E q1, and its derivatives are the paper's equations (3), (4).
+// right-multiplied increments Rt exp(d4 G1 + d5 G2). The residual of a correspondence (q1, q2) is
+// the algebraic epipolar error r = q2^T E q1, and its derivatives are the paper's equations (3),
+// (4).
 
 #ifndef OPENCV_ESSENTIAL_GEOMETRY_ESSENTIAL_PARAMETERISATION_HPP
 #define OPENCV_ESSENTIAL_GEOMETRY_ESSENTIAL_PARAMETERISATION_HPP

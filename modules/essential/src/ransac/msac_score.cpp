@@ -47,8 +47,8 @@ Score scoreMsac(const Matx33d& E, const Problem& problem, double bestCost)
     double err[kBlock];
     for (int begin = 0; begin < n; begin += kBlock) {
         const int end = std::min(n, begin + kBlock);
-        sampsonBlock(E, problem.x1.data(), problem.y1.data(), problem.x2.data(),
-                     problem.y2.data(), begin, end, err);
+        sampsonBlock(E, problem.x1.data(), problem.y1.data(), problem.x2.data(), problem.y2.data(),
+                     begin, end, err);
         double cost = 0.0;
         int inliers = 0;
         for (int i = 0; i < end - begin; ++i) {
@@ -77,8 +77,8 @@ int inlierMask(const Matx33d& E, const Problem& problem, double threshold, uchar
     int count = 0;
     for (int begin = 0; begin < n; begin += kBlock) {
         const int end = std::min(n, begin + kBlock);
-        sampsonBlock(E, problem.x1.data(), problem.y1.data(), problem.x2.data(),
-                     problem.y2.data(), begin, end, err);
+        sampsonBlock(E, problem.x1.data(), problem.y1.data(), problem.x2.data(), problem.y2.data(),
+                     begin, end, err);
         for (int i = 0; i < end - begin; ++i) {
             const bool in = err[i] <= t2;
             mask[begin + i] = in ? 1 : 0;

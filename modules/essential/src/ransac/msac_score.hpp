@@ -18,7 +18,7 @@ namespace ransac {
 struct Score
 {
     double cost = HUGE_VAL; //!< truncated sum of squared Sampson distances
-    int inliers = 0;        //!< points with squared Sampson distance at most threshold^2 (as OpenCV)
+    int inliers = 0; //!< points with squared Sampson distance at most threshold^2 (as OpenCV)
 };
 
 /** Scores E on all points. Gives up (returning a cost >= bestCost) as soon as the partial cost

@@ -36,7 +36,8 @@ struct SearchResult
 };
 
 /** Adaptive MSAC: stops when the samples drawn reach requiredIterations() for the best inlier ratio
-so far (with the solver's success rate), or sampleCap(maxIters, success rate). A result needs at least sampleSize inliers. */
+so far (with the solver's success rate), or sampleCap(maxIters, success rate). A result needs at
+least sampleSize inliers. */
 SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rng,
                         const SearchSettings& settings);
 

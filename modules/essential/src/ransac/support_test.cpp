@@ -45,7 +45,8 @@ double chanceInlierRate(const Matx33d& E, const Problem& problem, double thresho
     if (n < 2) return 0.0;
     Eigen::Matrix3d Em;
     for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) Em(i, j) = E(i, j);
+        for (int j = 0; j < 3; ++j)
+            Em(i, j) = E(i, j);
     const double t2 = threshold * threshold;
     long hits = 0, pairs = 0;
     for (int shift : kShifts) {

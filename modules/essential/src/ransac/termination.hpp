@@ -18,8 +18,8 @@ points was all inliers (inlier ratio `inlierRatio`) and the solver solved it (pr
 inline int requiredIterations(double confidence, double inlierRatio, int sampleSize,
                               double solverSuccess, int maxIters)
 {
-    const double good = solverSuccess * std::pow(std::min(std::max(inlierRatio, 0.0), 1.0),
-                                                 sampleSize);
+    const double good =
+        solverSuccess * std::pow(std::min(std::max(inlierRatio, 0.0), 1.0), sampleSize);
     if (good <= 0.0) return maxIters;
     if (good >= 1.0) return 1;
     const double num = std::log(std::max(1.0 - confidence, DBL_MIN));

@@ -18,7 +18,8 @@ inline void drawUniformSample(RNG& rng, int n, int k, int* indices)
         for (;;) {
             const int candidate = static_cast<int>(rng.uniform(0, n));
             bool repeated = false;
-            for (int j = 0; j < i; ++j) repeated |= (indices[j] == candidate);
+            for (int j = 0; j < i; ++j)
+                repeated |= (indices[j] == candidate);
             if (!repeated) {
                 indices[i] = candidate;
                 break;

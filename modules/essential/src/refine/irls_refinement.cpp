@@ -47,7 +47,8 @@ void normalEquations(const Problem& p, const EssentialPose& pose, double sigma2,
     const int n = p.size();
     double J[5];
     for (int i = 0; i < n; ++i) {
-        const double r = geometry::residualAndJacobian(frame, p.x1[i], p.y1[i], p.x2[i], p.y2[i], J);
+        const double r =
+            geometry::residualAndJacobian(frame, p.x1[i], p.y1[i], p.x2[i], p.y2[i], J);
         const Eigen::Vector3d q1(p.x1[i], p.y1[i], 1.0), q2(p.x2[i], p.y2[i], 1.0);
         const Eigen::Vector3d Eq1 = E * q1, Etq2 = E.transpose() * q2;
         const double D = Eq1.head<2>().squaredNorm() + Etq2.head<2>().squaredNorm();
@@ -69,7 +70,8 @@ IrlsResult refineIrls(const Problem& problem, const Matx33d& E0, double scale,
     result.E = E0;
     Eigen::Matrix3d E;
     for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) E(i, j) = E0(i, j);
+        for (int j = 0; j < 3; ++j)
+            E(i, j) = E0(i, j);
     EssentialPose pose;
     if (!geometry::poseFromEssential(E, pose)) return result;
 
@@ -111,7 +113,8 @@ IrlsResult refineIrls(const Problem& problem, const Matx33d& E0, double scale,
         geometry::reorthonormalise(pose.Rt);
         const Eigen::Matrix3d Er = pose.E();
         for (int i = 0; i < 3; ++i)
-            for (int j = 0; j < 3; ++j) result.E(i, j) = Er(i, j);
+            for (int j = 0; j < 3; ++j)
+                result.E(i, j) = Er(i, j);
         result.improved = true;
     }
     return result;

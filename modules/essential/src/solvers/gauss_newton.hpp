@@ -25,8 +25,8 @@ struct GaussNewtonSettings
     i.e. residuals ~1e-7, far below the 1e-3 noise level of image measurements in normalised units;
     1e-20 (machine precision) cost 0.7 more iterations per call for no better hypotheses. */
     double convergedCost = 1e-14;
-    /** Abandon when an iteration makes the cost this many times larger (diverging: a bad start or an
-    outlier-contaminated sample). */
+    /** Abandon when an iteration makes the cost this many times larger (diverging: a bad start or
+    an outlier-contaminated sample). */
     double divergenceFactor = 1e3;
     /** Probability of reaching the true E on an outlier-free sample, for the engine's iteration
     count: 0.357 measured noise-free (above); test_solvers asserts it. */

@@ -28,12 +28,12 @@ translation reaches the true E in 35.7% of calls with 6.5 iterations on average 
 0.3 rad) lowered the rate to 28% and 20%. Small inter-frame rotations, the common case in video,
 favour R0 = I further. */
 inline geometry::EssentialPose bestTranslationStart(const Point2d* x1, const Point2d* x2, int n,
-                                                   const Eigen::Matrix3d& R0)
+                                                    const Eigen::Matrix3d& R0)
 {
     Eigen::Matrix3d S = Eigen::Matrix3d::Zero();
     for (int i = 0; i < n; ++i) {
-        const Eigen::Vector3d c =
-            (R0 * Eigen::Vector3d(x1[i].x, x1[i].y, 1.0)).cross(Eigen::Vector3d(x2[i].x, x2[i].y, 1.0));
+        const Eigen::Vector3d c = (R0 * Eigen::Vector3d(x1[i].x, x1[i].y, 1.0))
+                                      .cross(Eigen::Vector3d(x2[i].x, x2[i].y, 1.0));
         S.noalias() += c * c.transpose();
     }
     Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig;
@@ -52,7 +52,8 @@ inline double evaluateMinimalSet(const geometry::EssentialPose& pose, const Poin
     double row[5];
     for (int i = 0; i < 5; ++i) {
         r[i] = geometry::residualAndJacobian(frame, x1[i].x, x1[i].y, x2[i].x, x2[i].y, row);
-        for (int k = 0; k < 5; ++k) J(i, k) = row[k];
+        for (int k = 0; k < 5; ++k)
+            J(i, k) = row[k];
     }
     return r.squaredNorm();
 }

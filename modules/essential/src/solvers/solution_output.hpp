@@ -17,7 +17,8 @@ inline int writeSolution(const geometry::EssentialPose& pose, Matx33d* solutions
 {
     const Eigen::Matrix3d E = pose.E();
     for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) solutions[0](i, j) = E(i, j);
+        for (int j = 0; j < 3; ++j)
+            solutions[0](i, j) = E(i, j);
     return 1;
 }
 

@@ -59,14 +59,16 @@ Ptr<EssentialSolver> createSolver(const std::string& name)
         auto it = r.factories.find(name);
         if (it == r.factories.end()) {
             std::string known;
-            for (const auto& kv : r.factories) known += (known.empty() ? "" : ", ") + kv.first;
+            for (const auto& kv : r.factories)
+                known += (known.empty() ? "" : ", ") + kv.first;
             CV_Error(Error::StsBadArg,
                      "createSolver: unknown solver '" + name + "' (registered: " + known + ")");
         }
         factory = it->second;
     }
     Ptr<EssentialSolver> solver = factory();
-    if (!solver) CV_Error(Error::StsError, "createSolver: the factory of '" + name + "' returned null");
+    if (!solver)
+        CV_Error(Error::StsError, "createSolver: the factory of '" + name + "' returned null");
     if (solver->sampleSize() < 5 || solver->maxSolutions() < 1)
         CV_Error(Error::StsBadArg, "createSolver: solver '" + name +
                                        "' must have sampleSize() >= 5 and maxSolutions() >= 1");
@@ -78,7 +80,8 @@ std::vector<std::string> listSolvers()
     Registry& r = registry();
     std::lock_guard<std::mutex> lock(r.mutex);
     std::vector<std::string> names;
-    for (const auto& kv : r.factories) names.push_back(kv.first);
+    for (const auto& kv : r.factories)
+        names.push_back(kv.first);
     return names;
 }
 

@@ -59,26 +59,26 @@ struct CV_EXPORTS EssentialParams
 /** @brief What one estimate did: the pose, the counts and the time spent per stage. */
 struct CV_EXPORTS EssentialReport
 {
-    bool success = false;  //!< an essential matrix was found
+    bool success = false;         //!< an essential matrix was found
     Matx33d E = Matx33d::zeros(); //!< the returned essential matrix (Frobenius norm sqrt(2))
     Matx33d R = Matx33d::eye();   //!< rotation from view 1 to view 2 (if poseRecovered)
     Vec3d t = Vec3d(0, 0, 0);     //!< unit translation, X2 = R X1 + s t (if poseRecovered)
     bool poseRecovered = false;   //!< R and t were computed
     int pointsInFront = 0;        //!< inliers in front of both cameras for (R, t)
 
-    int numPoints = 0;            //!< correspondences given
-    int inliers = 0;              //!< non-zero entries of the returned mask
-    int iterations = 0;           //!< samples drawn (at most maxIters / solver success rate)
-    int hypothesesGenerated = 0;  //!< solver calls made (one per sample)
-    int hypothesesConverged = 0;  //!< essential matrices the solver returned
-    int hypothesesScored = 0;     //!< essential matrices scored against the data
-    int refineIterations = 0;     //!< IRLS iterations of the final refinement
+    int numPoints = 0;           //!< correspondences given
+    int inliers = 0;             //!< non-zero entries of the returned mask
+    int iterations = 0;          //!< samples drawn (at most maxIters / solver success rate)
+    int hypothesesGenerated = 0; //!< solver calls made (one per sample)
+    int hypothesesConverged = 0; //!< essential matrices the solver returned
+    int hypothesesScored = 0;    //!< essential matrices scored against the data
+    int refineIterations = 0;    //!< IRLS iterations of the final refinement
 
-    double timeSetupMs = 0;   //!< input checks and normalisation
-    double timeSearchMs = 0;  //!< sampling, solving and scoring
-    double timeRefineMs = 0;  //!< final IRLS refinement and mask
-    double timePoseMs = 0;    //!< decomposition into R and t
-    double timeTotalMs = 0;   //!< the whole call
+    double timeSetupMs = 0;  //!< input checks and normalisation
+    double timeSearchMs = 0; //!< sampling, solving and scoring
+    double timeRefineMs = 0; //!< final IRLS refinement and mask
+    double timePoseMs = 0;   //!< decomposition into R and t
+    double timeTotalMs = 0;  //!< the whole call
 };
 
 //! @}

@@ -130,6 +130,37 @@ TEST(EssentialParameterisation, JacobianMatchesFiniteDifferences)
     RecordProperty("worst_jacobian_error", std::to_string(worst));
 }
 
+TEST(EssentialParameterisation, SampsonJacobianMatchesFiniteDifferences)
+{
+    std::mt19937_64 g(9);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    const double h = 1e-6;
+    for (int trial = 0; trial < 200; ++trial) {
+        const EssentialPose p = randomPose(g);
+        const double x1 = u(g), y1 = u(g), x2 = u(g), y2 = u(g);
+        double s, J[5];
+        ASSERT_TRUE(sampsonResidualAndJacobian(EssentialDerivatives(p), x1, y1, x2, y2, s, J));
+        const double r = algebraicResidual(p.E(), x1, y1, x2, y2);
+        EXPECT_NEAR(s * s, sampsonSquared(p.E(), x1, y1, x2, y2), 1e-12);
+        EXPECT_GE(s * r, 0.0); // the Sampson residual keeps the sign of r
+        auto signedSampson = [&](const EssentialPose& q) {
+            const double rq = algebraicResidual(q.E(), x1, y1, x2, y2);
+            return std::copysign(std::sqrt(sampsonSquared(q.E(), x1, y1, x2, y2)), rq);
+        };
+        for (int k = 0; k < 5; ++k) {
+            Vector5d d = Vector5d::Zero();
+            d[k] = h;
+            EssentialPose plus = p, minus = p;
+            plus.update(d);
+            minus.update(-d);
+            const double numeric = (signedSampson(plus) - signedSampson(minus)) / (2 * h);
+            // Relative to the derivative's size: points near an epipole have large derivatives.
+            EXPECT_NEAR(J[k], numeric, 1e-7 * (1.0 + std::abs(numeric)))
+                << "parameter " << k + 1 << " trial " << trial;
+        }
+    }
+}
+
 TEST(EssentialParameterisation, UpdateKeepsTheManifold)
 {
     std::mt19937_64 g(6);

@@ -95,6 +95,53 @@ inline double residualAndJacobian(const ResidualFrame& f, double x1, double y1, 
     return f.t.dot(c);
 }
 
+/** E and its derivatives dE/dd_k along the five parameter directions, computed once per pose:
+dE/dd_k = [t]x G_k R (k = 1..3) and [Rt G_j e1]x R = -[u]x R, -[v]x R (k = 4, 5). */
+struct EssentialDerivatives
+{
+    Eigen::Matrix3d E;
+    Eigen::Matrix3d dE[5];
+
+    explicit EssentialDerivatives(const EssentialPose& p)
+    {
+        const Eigen::Matrix3d T = skew(p.Rt.col(0));
+        E = T * p.R;
+        Eigen::Matrix3d G[3];
+        G[0] << 0, 1, 0, -1, 0, 0, 0, 0, 0;
+        G[1] << 0, 0, 1, 0, 0, 0, -1, 0, 0;
+        G[2] << 0, 0, 0, 0, 0, 1, 0, -1, 0;
+        for (int k = 0; k < 3; ++k)
+            dE[k] = T * G[k] * p.R;
+        dE[3] = -skew(p.Rt.col(1)) * p.R;
+        dE[4] = -skew(p.Rt.col(2)) * p.R;
+    }
+};
+
+/** The Sampson residual s = r / sqrt(D), D = |(E q1)_xy|^2 + |(E^T q2)_xy|^2, and its 5 derivatives
+ds/dd_k = dr_k / sqrt(D) - r dD_k / (2 D^(3/2)), with dr_k = q2^T dE_k q1 and
+dD_k = 2 ((E q1)_xy . (dE_k q1)_xy + (E^T q2)_xy . (dE_k^T q2)_xy). Returns false (and leaves s, J
+unset) for a point with D = 0, which has no defined Sampson distance. */
+inline bool sampsonResidualAndJacobian(const EssentialDerivatives& d, double x1, double y1,
+                                       double x2, double y2, double& s, double J[5])
+{
+    const Eigen::Vector3d q1(x1, y1, 1.0), q2(x2, y2, 1.0);
+    const Eigen::Vector3d Eq1 = d.E * q1, Etq2 = d.E.transpose() * q2;
+    const double D =
+        Eq1.x() * Eq1.x() + Eq1.y() * Eq1.y() + Etq2.x() * Etq2.x() + Etq2.y() * Etq2.y();
+    if (!(D > 0.0)) return false;
+    const double r = q2.dot(Eq1);
+    const double invSqrtD = 1.0 / std::sqrt(D);
+    s = r * invSqrtD;
+    for (int k = 0; k < 5; ++k) {
+        const Eigen::Vector3d dEq1 = d.dE[k] * q1, dEtq2 = d.dE[k].transpose() * q2;
+        const double dr = q2.dot(dEq1);
+        const double dD = 2.0 * (Eq1.x() * dEq1.x() + Eq1.y() * dEq1.y() + Etq2.x() * dEtq2.x() +
+                                 Etq2.y() * dEtq2.y());
+        J[k] = invSqrtD * (dr - 0.5 * r * dD / D);
+    }
+    return true;
+}
+
 /** The algebraic residual alone, r = q2^T E q1. */
 inline double algebraicResidual(const Eigen::Matrix3d& E, double x1, double y1, double x2,
                                 double y2)

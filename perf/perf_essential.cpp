@@ -84,32 +84,35 @@ std::vector<essential_test::SyntheticScene> scenes(int n, double ratio)
     return v;
 }
 
-/** findEssentialMatIter (drop-in defaults) + recoverPose; args: N, inlier ratio in percent. */
-void BM_FindEssentialMatIter(benchmark::State& state)
+/** Runs `estimate(scene)` on 16 scenes in turn; args: N, inlier ratio in percent. */
+template <class F> void estimateLoop(benchmark::State& state, F estimate)
 {
     const auto problems = scenes(int(state.range(0)), state.range(1) / 100.0);
     size_t i = 0;
-    for (auto _ : state) {
-        const auto& s = problems[i++ % problems.size()];
+    for (auto _ : state)
+        estimate(problems[i++ % problems.size()]);
+}
+
+/** findEssentialMatIter (drop-in defaults) + recoverPose. */
+void BM_FindEssentialMatIter(benchmark::State& state)
+{
+    estimateLoop(state, [](const essential_test::SyntheticScene& s) {
         cv::Mat mask, R, t;
         cv::Mat E = cv::essential::findEssentialMatIter(s.px1, s.px2, cv::Mat(s.K), cv::RANSAC,
                                                         0.999, 1.0, 1000, mask);
         if (!E.empty()) cv::essential::recoverPose(E, s.px1, s.px2, cv::Mat(s.K), R, t, mask);
-    }
+    });
 }
 
 /** The same with cv::findEssentialMat (RANSAC) + cv::recoverPose, for the ratio. */
 void BM_OpenCV_FindEssentialMat(benchmark::State& state)
 {
-    const auto problems = scenes(int(state.range(0)), state.range(1) / 100.0);
-    size_t i = 0;
-    for (auto _ : state) {
-        const auto& s = problems[i++ % problems.size()];
+    estimateLoop(state, [](const essential_test::SyntheticScene& s) {
         cv::Mat mask, R, t;
         cv::Mat E =
             cv::findEssentialMat(s.px1, s.px2, cv::Mat(s.K), cv::RANSAC, 0.999, 1.0, 1000, mask);
         if (E.rows == 3) cv::recoverPose(E, s.px1, s.px2, cv::Mat(s.K), R, t, mask);
-    }
+    });
 }
 
 BENCHMARK(BM_FindEssentialMatIter)

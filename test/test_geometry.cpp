@@ -31,6 +31,17 @@ EssentialPose randomPose(std::mt19937_64& g)
     return p;
 }
 
+/** Central difference of f(pose) along parameter k of the 5-DOF update, step h. */
+template <class F> double centralDifference(const EssentialPose& p, int k, double h, F f)
+{
+    Vector5d d = Vector5d::Zero();
+    d[k] = h;
+    EssentialPose plus = p, minus = p;
+    plus.update(d);
+    minus.update(-d);
+    return (f(plus) - f(minus)) / (2 * h);
+}
+
 TEST(SO3, ExpIsARotation)
 {
     std::mt19937_64 g(1);
@@ -114,14 +125,9 @@ TEST(EssentialParameterisation, JacobianMatchesFiniteDifferences)
         const double r = residualAndJacobian(ResidualFrame(p), x1, y1, x2, y2, J);
         EXPECT_NEAR(r, algebraicResidual(p.E(), x1, y1, x2, y2), 1e-14);
         for (int k = 0; k < 5; ++k) {
-            Vector5d d = Vector5d::Zero();
-            d[k] = h;
-            EssentialPose plus = p, minus = p;
-            plus.update(d);
-            minus.update(-d);
-            const double numeric = (algebraicResidual(plus.E(), x1, y1, x2, y2) -
-                                    algebraicResidual(minus.E(), x1, y1, x2, y2)) /
-                                   (2 * h);
+            const double numeric = centralDifference(p, k, h, [&](const EssentialPose& q) {
+                return algebraicResidual(q.E(), x1, y1, x2, y2);
+            });
             // Central differences: truncation O(h^2) ~ 1e-12, round-off ~ 1e-16 / h = 1e-10.
             EXPECT_NEAR(J[k], numeric, 1e-8) << "parameter " << k + 1 << " trial " << trial;
             worst = std::max(worst, std::abs(J[k] - numeric));
@@ -148,12 +154,7 @@ TEST(EssentialParameterisation, SampsonJacobianMatchesFiniteDifferences)
             return std::copysign(std::sqrt(sampsonSquared(q.E(), x1, y1, x2, y2)), rq);
         };
         for (int k = 0; k < 5; ++k) {
-            Vector5d d = Vector5d::Zero();
-            d[k] = h;
-            EssentialPose plus = p, minus = p;
-            plus.update(d);
-            minus.update(-d);
-            const double numeric = (signedSampson(plus) - signedSampson(minus)) / (2 * h);
+            const double numeric = centralDifference(p, k, h, signedSampson);
             // Relative to the derivative's size: points near an epipole have large derivatives.
             EXPECT_NEAR(J[k], numeric, 1e-7 * (1.0 + std::abs(numeric)))
                 << "parameter " << k + 1 << " trial " << trial;

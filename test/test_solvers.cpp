@@ -54,26 +54,26 @@ Rates measure(cv::essential::EssentialSolver& solver, int trials, double noise, 
 // 40.1% (noise-free; the remaining converged calls find one of the other real roots). The bounds
 // leave about 3 standard errors (sqrt(p(1-p)/2000) ~ 1.1%) of margin, and each solver's
 // successRate() must not promise more than it delivers.
+void expectRates(cv::essential::EssentialSolver& solver, double minConverged, double minCorrect)
+{
+    const Rates r = measure(solver, 2000, 0.0, 1e-6);
+    ::testing::Test::RecordProperty("converged", std::to_string(r.converged));
+    ::testing::Test::RecordProperty("correct", std::to_string(r.correct));
+    EXPECT_GT(r.converged, minConverged);
+    EXPECT_GT(r.correct, minCorrect);
+    EXPECT_LE(solver.successRate(), r.correct + 0.03);
+}
+
 TEST(Solvers, GaussNewtonConvergesOnNoiseFreeMinimalSets)
 {
     cv::essential::solvers::GaussNewtonSolver gn;
-    const Rates r = measure(gn, 2000, 0.0, 1e-6);
-    RecordProperty("converged", std::to_string(r.converged));
-    RecordProperty("correct", std::to_string(r.correct));
-    EXPECT_GT(r.converged, 0.72);
-    EXPECT_GT(r.correct, 0.32);
-    EXPECT_LE(gn.successRate(), r.correct + 0.03);
+    expectRates(gn, 0.72, 0.32);
 }
 
 TEST(Solvers, LevenbergMarquardtConvergesOnNoiseFreeMinimalSets)
 {
     cv::essential::solvers::LevenbergMarquardtSolver lm;
-    const Rates r = measure(lm, 2000, 0.0, 1e-6);
-    RecordProperty("converged", std::to_string(r.converged));
-    RecordProperty("correct", std::to_string(r.correct));
-    EXPECT_GT(r.converged, 0.74);
-    EXPECT_GT(r.correct, 0.36);
-    EXPECT_LE(lm.successRate(), r.correct + 0.03);
+    expectRates(lm, 0.74, 0.36);
 }
 
 // With the protocol's noise (0.001) a minimal set still has exact solutions, now near the true E:

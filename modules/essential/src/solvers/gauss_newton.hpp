@@ -6,7 +6,7 @@
 #ifndef OPENCV_ESSENTIAL_SOLVERS_GAUSS_NEWTON_HPP
 #define OPENCV_ESSENTIAL_SOLVERS_GAUSS_NEWTON_HPP
 
-#include "opencv2/essential/solver.hpp"
+#include "solvers/iterative_minimal_solver.hpp"
 
 namespace cv {
 namespace essential {
@@ -35,24 +35,14 @@ struct GaussNewtonSettings
 
 /** The Gauss-Newton minimal solver. With five residuals and five parameters each step solves the
 square system J d = -r (a 5x5 LU with partial pivoting). Yields 0 or 1 essential matrix. */
-class GaussNewtonSolver : public EssentialSolver
+class GaussNewtonSolver : public IterativeMinimalSolver<GaussNewtonSettings>
 {
 public:
     explicit GaussNewtonSolver(const GaussNewtonSettings& settings = GaussNewtonSettings())
-        : settings_(settings)
+        : IterativeMinimalSolver<GaussNewtonSettings>(settings)
     {
     }
-    int sampleSize() const override { return 5; }
-    int maxSolutions() const override { return 1; }
     int solve(const Point2d* x1, const Point2d* x2, RNG& rng, Matx33d* solutions) override;
-    double successRate() const override { return settings_.successRate; }
-
-    /** Iterations used by the last call of solve() (for measurements). */
-    int lastIterations() const { return lastIterations_; }
-
-private:
-    GaussNewtonSettings settings_;
-    int lastIterations_ = 0;
 };
 
 } // namespace solvers

@@ -6,7 +6,7 @@
 #ifndef OPENCV_ESSENTIAL_SOLVERS_LEVENBERG_MARQUARDT_HPP
 #define OPENCV_ESSENTIAL_SOLVERS_LEVENBERG_MARQUARDT_HPP
 
-#include "opencv2/essential/solver.hpp"
+#include "solvers/iterative_minimal_solver.hpp"
 
 namespace cv {
 namespace essential {
@@ -35,25 +35,15 @@ struct LevenbergMarquardtSettings
 /** The LM minimal solver: damped Gauss-Newton steps (J^T J + lambda diag(J^T J)) d = -J^T r, a step
 accepted only if it lowers the cost. Slower per iteration than GN, but it converges from more
 starting points. Yields 0 or 1 essential matrix. */
-class LevenbergMarquardtSolver : public EssentialSolver
+class LevenbergMarquardtSolver : public IterativeMinimalSolver<LevenbergMarquardtSettings>
 {
 public:
     explicit LevenbergMarquardtSolver(
         const LevenbergMarquardtSettings& settings = LevenbergMarquardtSettings())
-        : settings_(settings)
+        : IterativeMinimalSolver<LevenbergMarquardtSettings>(settings)
     {
     }
-    int sampleSize() const override { return 5; }
-    int maxSolutions() const override { return 1; }
     int solve(const Point2d* x1, const Point2d* x2, RNG& rng, Matx33d* solutions) override;
-    double successRate() const override { return settings_.successRate; }
-
-    /** Trial steps used by the last call of solve() (for measurements). */
-    int lastIterations() const { return lastIterations_; }
-
-private:
-    LevenbergMarquardtSettings settings_;
-    int lastIterations_ = 0;
 };
 
 } // namespace solvers

@@ -24,10 +24,9 @@ SearchResult searchLmeds(const Problem& problem, EssentialSolver& solver, RNG& r
 
     // OpenCV's LMeDS assumes 45% outliers to fix the number of samples (at least 3).
     const double assumedInlierRatio = 0.55;
-    const int samples =
-        std::max(3, requiredIterations(settings.confidence, assumedInlierRatio, buffer.sampleSize,
-                                       solver.successRate(),
-                                       sampleCap(settings.maxIters, solver.successRate())));
+    const int samples = std::max(
+        3, requiredIterations(settings.confidence, solver.hitProbability(assumedInlierRatio),
+                              sampleCap(settings.maxIters, solver.successRate())));
     std::vector<double> errors(static_cast<size_t>(n));
     double bestMedian = HUGE_VAL;
     for (; result.iterations < samples; ++result.iterations) {

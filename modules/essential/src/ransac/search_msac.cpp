@@ -34,8 +34,8 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
                 best = s;
                 result.E = buffer.solutions[h];
                 result.found = true;
-                needed = requiredIterations(settings.confidence, double(s.inliers) / n,
-                                            buffer.sampleSize, solver.successRate(), cap);
+                needed = requiredIterations(settings.confidence,
+                                            solver.hitProbability(double(s.inliers) / n), cap);
             }
         }
     }

@@ -12,15 +12,13 @@ namespace cv {
 namespace essential {
 namespace ransac {
 
-/** Samples needed so that, with probability `confidence`, at least one sample of `sampleSize`
-points was all inliers (inlier ratio `inlierRatio`) and the solver solved it (probability
-`solverSuccess` for an outlier-free sample): log(1 - p) / log(1 - s w^k), capped at maxIters. */
-inline int requiredIterations(double confidence, double inlierRatio, int sampleSize,
-                              double solverSuccess, int maxIters)
+/** Samples needed so that, with probability `confidence`, at least one sample gave the true model
+when each does so with probability `hitProbability` (EssentialSolver::hitProbability for the
+current inlier ratio): log(1 - p) / log(1 - hit), capped at maxIters. */
+inline int requiredIterations(double confidence, double hitProbability, int maxIters)
 {
-    const double good =
-        solverSuccess * std::pow(std::min(std::max(inlierRatio, 0.0), 1.0), sampleSize);
-    if (good <= 0.0) return maxIters;
+    const double good = hitProbability;
+    if (!(good > 0.0)) return maxIters;
     if (good >= 1.0) return 1;
     const double num = std::log(std::max(1.0 - confidence, DBL_MIN));
     const double den = std::log1p(-good);

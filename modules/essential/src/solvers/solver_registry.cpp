@@ -10,6 +10,8 @@
 #include "solvers/gauss_newton.hpp"
 #include "solvers/levenberg_marquardt.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <map>
 #include <mutex>
 
@@ -17,6 +19,12 @@ namespace cv {
 namespace essential {
 
 EssentialSolver::~EssentialSolver() {}
+
+double EssentialSolver::hitProbability(double inlierRatio) const
+{
+    const double w = std::min(1.0, std::max(0.0, inlierRatio));
+    return successRate() * std::pow(w, sampleSize());
+}
 
 namespace {
 

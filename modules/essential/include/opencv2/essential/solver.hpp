@@ -57,6 +57,14 @@ public:
     samples the requested confidence needs. The default is 1.
     */
     virtual double successRate() const { return 1.0; }
+
+    /** @brief Probability that one call on a random sample from data with the given inlier ratio
+    returns the true model; the engine's stopping rule needs it.
+
+    The default, `successRate() * inlierRatio^sampleSize()`, suits solvers that need an outlier-free
+    sample. A robust solver that tolerates outliers in its sample overrides it.
+    */
+    virtual double hitProbability(double inlierRatio) const;
 };
 
 /** A function that makes a new, independent solver instance. */

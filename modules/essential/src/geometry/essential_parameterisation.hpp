@@ -142,6 +142,33 @@ inline bool sampsonResidualAndJacobian(const EssentialDerivatives& d, double x1,
     return true;
 }
 
+/** The two epipolar distances of the paper's equation (5): g = r / |(E q1)_xy|, the distance of q2
+to its epipolar line in view 2, and g' = r / |(E^T q2)_xy|, that of q1 in view 1, with their
+derivatives dg/dd_k = (dr_k - r dD1_k / (2 D1)) / sqrt(D1) (D1 = |(E q1)_xy|^2) and likewise for g'.
+Returns false for a point on an epipole (D1 or D2 zero). */
+inline bool epipolarDistancesAndJacobian(const EssentialDerivatives& d, double x1, double y1,
+                                         double x2, double y2, double g[2], double J[2][5])
+{
+    const Eigen::Vector3d q1(x1, y1, 1.0), q2(x2, y2, 1.0);
+    const Eigen::Vector3d Eq1 = d.E * q1, Etq2 = d.E.transpose() * q2;
+    const double D1 = Eq1.x() * Eq1.x() + Eq1.y() * Eq1.y();
+    const double D2 = Etq2.x() * Etq2.x() + Etq2.y() * Etq2.y();
+    if (!(D1 > 0.0) || !(D2 > 0.0)) return false;
+    const double r = q2.dot(Eq1);
+    const double s1 = 1.0 / std::sqrt(D1), s2 = 1.0 / std::sqrt(D2);
+    g[0] = r * s1;
+    g[1] = r * s2;
+    for (int k = 0; k < 5; ++k) {
+        const Eigen::Vector3d dEq1 = d.dE[k] * q1, dEtq2 = d.dE[k].transpose() * q2;
+        const double dr = q2.dot(dEq1);
+        const double dD1 = 2.0 * (Eq1.x() * dEq1.x() + Eq1.y() * dEq1.y());
+        const double dD2 = 2.0 * (Etq2.x() * dEtq2.x() + Etq2.y() * dEtq2.y());
+        J[0][k] = s1 * (dr - 0.5 * r * dD1 / D1);
+        J[1][k] = s2 * (dr - 0.5 * r * dD2 / D2);
+    }
+    return true;
+}
+
 /** The algebraic residual alone, r = q2^T E q1. */
 inline double algebraicResidual(const Eigen::Matrix3d& E, double x1, double y1, double x2,
                                 double y2)

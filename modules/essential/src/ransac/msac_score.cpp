@@ -40,13 +40,17 @@ constexpr int kBlock = 64;
 
 Score scoreMsac(const Matx33d& E, const Problem& problem, double bestCost)
 {
-    const int n = problem.size();
+    return scoreMsacRange(E, problem, 0, problem.size(), bestCost);
+}
+
+Score scoreMsacRange(const Matx33d& E, const Problem& problem, int first, int last, double bestCost)
+{
     const double t2 = problem.threshold * problem.threshold;
     Score s;
     s.cost = 0.0;
     double err[kBlock];
-    for (int begin = 0; begin < n; begin += kBlock) {
-        const int end = std::min(n, begin + kBlock);
+    for (int begin = first; begin < last; begin += kBlock) {
+        const int end = std::min(last, begin + kBlock);
         sampsonBlock(E, problem.x1.data(), problem.y1.data(), problem.x2.data(), problem.y2.data(),
                      begin, end, err);
         double cost = 0.0;

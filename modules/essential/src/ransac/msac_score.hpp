@@ -25,6 +25,11 @@ struct Score
 reaches bestCost: a hypothesis that cannot win needs no exact score. */
 Score scoreMsac(const Matx33d& E, const Problem& problem, double bestCost = HUGE_VAL);
 
+/** The MSAC score of E on the points [begin, end) only (for preemptive scoring block by block),
+with the same early exit at bestCost. */
+Score scoreMsacRange(const Matx33d& E, const Problem& problem, int begin, int end,
+                     double bestCost = HUGE_VAL);
+
 /** Squared Sampson distance of every point to E (for LMedS and masks). */
 void sampsonErrors(const Matx33d& E, const Problem& problem, double* errors);
 

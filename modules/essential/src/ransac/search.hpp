@@ -10,6 +10,7 @@
 
 #include "opencv2/essential/solver.hpp"
 #include "problem.hpp"
+#include "ransac/deadline.hpp"
 
 namespace cv {
 namespace essential {
@@ -19,6 +20,12 @@ struct SearchSettings
 {
     double confidence = 0.999;
     int maxIters = 1000;
+    /** The search returns its best model so far once this passes (checked every few samples). */
+    Deadline deadline;
+    /** Preemptive search: hypotheses generated up front (0: chosen from the deadline, or
+    kDefaultPreemptiveHypotheses without one) and the block size B. */
+    int preemptiveHypotheses = 0;
+    int preemptiveBlockSize = 100;
 };
 
 struct SearchResult
@@ -46,6 +53,23 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
 2.5 * 1.4826 * (1 + 5 / (N - 5)) * sqrt(median). */
 SearchResult searchLmeds(const Problem& problem, EssentialSolver& solver, RNG& rng,
                          const SearchSettings& settings);
+
+/** Nister's preemptive breadth-first RANSAC: M hypotheses generated up front (samples drawn until
+M exist), then scored on blocks of B points in a random order, keeping the best
+floor(M 2^-floor(i / B)) after i points, until one remains or the points run out. With a deadline
+and no M given, M is chosen at run time from the measured cost of generating a hypothesis and of
+scoring a point, so that generation and scoring fit the time left. */
+SearchResult searchPreemptive(const Problem& problem, EssentialSolver& solver, RNG& rng,
+                              const SearchSettings& settings);
+
+/** M of the preemptive search when neither M nor a deadline is given. */
+constexpr int kDefaultPreemptiveHypotheses = 500;
+
+/** The same search run by OpenCV's exported RANSAC (method RANSAC) or LMedS (method LMEDS) loop,
+with `solver` as its kernel (ransac/opencv_loop.cpp). Raises StsNotImplemented when the build has
+no usable OpenCV loop. */
+SearchResult searchOpenCvLoop(const Problem& problem, EssentialSolver& solver, RNG& rng,
+                              const SearchSettings& settings, int method);
 
 } // namespace ransac
 } // namespace essential

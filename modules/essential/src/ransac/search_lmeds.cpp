@@ -30,6 +30,7 @@ SearchResult searchLmeds(const Problem& problem, EssentialSolver& solver, RNG& r
     std::vector<double> errors(static_cast<size_t>(n));
     double bestMedian = HUGE_VAL;
     for (; result.iterations < samples; ++result.iterations) {
+        if ((result.iterations & 7) == 7 && settings.deadline.passed()) break;
         const int count = buffer.drawAndSolve(problem, solver, rng);
         ++result.hypothesesGenerated;
         result.hypothesesConverged += count;

@@ -23,6 +23,7 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
     const int cap = sampleCap(settings.maxIters, solver.successRate());
     int needed = cap;
     while (result.iterations < needed) {
+        if ((result.iterations & 7) == 7 && settings.deadline.passed()) break;
         ++result.iterations;
         const int count = buffer.drawAndSolve(problem, solver, rng);
         ++result.hypothesesGenerated;

@@ -7,8 +7,11 @@
 
 #include "opencv2/essential/solver.hpp"
 
+#include "solvers/composite_solver.hpp"
 #include "solvers/gauss_newton.hpp"
 #include "solvers/levenberg_marquardt.hpp"
+#include "solvers/nister_five_point.hpp"
+#include "solvers/robust_irls.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -37,6 +40,8 @@ struct Registry
     {
         factories["gn"] = [] { return makePtr<solvers::GaussNewtonSolver>(); };
         factories["lm"] = [] { return makePtr<solvers::LevenbergMarquardtSolver>(); };
+        factories["nister"] = [] { return makePtr<solvers::NisterFivePointSolver>(); };
+        factories["robust"] = [] { return makePtr<solvers::RobustIrlsSolver>(); };
     }
 };
 
@@ -51,6 +56,9 @@ Registry& registry()
 void registerSolver(const std::string& name, const EssentialSolverFactory& factory)
 {
     if (name.empty()) CV_Error(Error::StsBadArg, "registerSolver: the solver name is empty");
+    if (name.find_first_of("+:") != std::string::npos)
+        CV_Error(Error::StsBadArg,
+                 "registerSolver: '" + name + "' contains '+' or ':', which compose solver names");
     if (!factory)
         CV_Error(Error::StsBadArg, "registerSolver: the factory of solver '" + name + "' is empty");
     Registry& r = registry();
@@ -60,6 +68,15 @@ void registerSolver(const std::string& name, const EssentialSolverFactory& facto
 
 Ptr<EssentialSolver> createSolver(const std::string& name)
 {
+    if (name.find('+') != std::string::npos || name.find(':') != std::string::npos) {
+        std::vector<std::string> partNames;
+        std::vector<int> weights;
+        solvers::parseCompositeName(name, partNames, weights);
+        std::vector<Ptr<EssentialSolver>> parts;
+        for (const std::string& part : partNames)
+            parts.push_back(createSolver(part));
+        return makePtr<solvers::CompositeSolver>(std::move(parts), std::move(weights));
+    }
     EssentialSolverFactory factory;
     {
         Registry& r = registry();

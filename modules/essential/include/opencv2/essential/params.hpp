@@ -15,6 +15,23 @@ namespace essential {
 //! @addtogroup essential
 //! @{
 
+/** Which hypothesise-and-verify loop runs the search. */
+enum EssentialEngine {
+    /** The module's adaptive loop: MSAC for `RANSAC`, least median of squares for `LMEDS`. */
+    ENGINE_ADAPTIVE = 0,
+    /** OpenCV's own RANSAC or LMedS loop (the one cv::findEssentialMat uses, exported by
+    libopencv_calib3d), with the chosen solver as its kernel. Available when the build found that
+    loop usable (see isOpenCvLoopAvailable()); otherwise selecting it raises StsNotImplemented. */
+    ENGINE_OPENCV = 1,
+    /** Nister's preemptive breadth-first RANSAC, as in the paper: M hypotheses generated up front,
+    scored on blocks of B points in a random order, the better half kept after each block. Scores
+    with MSAC; `method` must be RANSAC. */
+    ENGINE_PREEMPTIVE = 2
+};
+
+/** True when this build can run solvers inside OpenCV's own RANSAC loop (ENGINE_OPENCV). */
+CV_EXPORTS bool isOpenCvLoopAvailable();
+
 /** @brief Settings of one essential-matrix estimate (the module's own overload of
 findEssentialMatIter()).
 
@@ -29,6 +46,22 @@ struct CV_EXPORTS EssentialParams
     /** Scoring: `cv::RANSAC` (adaptive MSAC, truncated Sampson error) or `cv::LMEDS` (least median
     of squared Sampson errors; the threshold is then derived from the data, as OpenCV does). */
     int method = RANSAC;
+
+    /** The search loop: ENGINE_ADAPTIVE (default), ENGINE_PREEMPTIVE or ENGINE_OPENCV. */
+    int engine = ENGINE_ADAPTIVE;
+
+    /** Time budget of the whole call in milliseconds; 0 (default) for none. With a budget the
+    search returns the best model found when the time left is what the final refinement needs
+    (estimated from the number of points), so that the call as a whole takes about this long.
+    Honoured by ENGINE_ADAPTIVE and ENGINE_PREEMPTIVE; ENGINE_OPENCV raises StsNotImplemented. */
+    double timeBudgetMs = 0;
+
+    /** ENGINE_PREEMPTIVE: number M of hypotheses generated up front. 0 (default): chosen at run
+    time to fill timeBudgetMs, or 500 without a budget. */
+    int preemptiveHypotheses = 0;
+
+    /** ENGINE_PREEMPTIVE: block size B, the points scored between two halvings. */
+    int preemptiveBlockSize = 100;
 
     /** Required probability, in (0, 1), that at least one sample was outlier-free and solved. */
     double confidence = 0.999;

@@ -73,17 +73,23 @@ typedef std::function<Ptr<EssentialSolver>()> EssentialSolverFactory;
 /** @brief Registers (or replaces) the solver called `name`.
 
 Thread-safe. The built-in solvers are `"gn"` (Gauss-Newton on a minimal set, Rosten et al.
-Algorithm 2) and `"lm"` (Levenberg-Marquardt on a minimal set, Algorithm 1).
-@throws cv::Exception (StsBadArg) if `name` is empty or `factory` is empty.
+Algorithm 2), `"lm"` (Levenberg-Marquardt on a minimal set, Algorithm 1), `"robust"` (IRLS on a
+10-point sample, Algorithm 3) and `"nister"` (Nister's 5-point solver, Algorithm 4).
+@throws cv::Exception (StsBadArg) if `name` is empty or contains '+' or ':' (reserved for composite
+names, see createSolver()), or if `factory` is empty.
 */
 CV_EXPORTS void registerSolver(const std::string& name, const EssentialSolverFactory& factory);
 
-/** @brief Makes a new instance of the solver registered as `name`.
+/** @brief Makes a new instance of the solver registered as `name`, or a composite of several.
+
+A composite name such as `"gn+nister"` or `"gn:3+nister:1"` makes a solver that takes turns among
+the named parts in the given proportion (weights 1 to 1000, default 1): the paper's suggestion of
+drawing hypotheses from GN and Nister together. Its sample is the largest any part needs.
 @throws cv::Exception (StsBadArg) naming the unknown solver and the known ones.
 */
 CV_EXPORTS Ptr<EssentialSolver> createSolver(const std::string& name);
 
-/** The names of all registered solvers, sorted. */
+/** The names of all registered solvers, sorted (composites are not listed). */
 CV_EXPORTS std::vector<std::string> listSolvers();
 
 //! @}

@@ -8,7 +8,7 @@
 //
 //   essential_rail_solvers --data DIR [--sequences horizontal,optic] [--offsets 2,5,10,20,40]
 //                          [--pairs 8] [--solvers gn,lm,nister,robust] [--max-iters 1000]
-//                          [--repeats 3]
+//                          [--repeats 3] [--budget-ms T]
 //
 // DIR holds one folder per sequence with NNN.jpg frames, camera.txt (3 x 3 K) and poses.txt
 // (`k r00 .. r22 Cx Cy Cz`, world-to-camera rotation and camera centre), as ../shared/data/rail-a.
@@ -97,6 +97,7 @@ int main(int argc, char** argv)
     std::vector<int> offsets = {2, 5, 10, 20, 40};
     std::vector<std::string> solvers = {"gn", "lm", "nister", "robust"};
     int pairs = 8, maxIters = 1000, repeats = 3;
+    double budgetMs = 0;
     for (int i = 1; i + 1 < argc; i += 2) {
         const std::string k = argv[i], v = argv[i + 1];
         if (k == "--data")
@@ -167,6 +168,12 @@ int main(int argc, char** argv)
                         params.solver = solver;
                         params.maxIters = maxIters;
                         params.seed = 1000 + r;
+                        if (budgetMs > 0) {
+                            // The budget, not the confidence or the cap, ends the search.
+                            params.timeBudgetMs = budgetMs;
+                            params.confidence = 1.0 - 1e-12;
+                            params.maxIters = 100000000;
+                        }
                         cv::essential::EssentialReport report;
                         const auto t0 = std::chrono::steady_clock::now();
                         const cv::Mat E = cv::essential::findEssentialMatIter(

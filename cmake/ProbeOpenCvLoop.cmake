@@ -14,8 +14,8 @@
 #
 # Sets <result-var> to TRUE when the probe passed; otherwise FALSE, with a STATUS message saying
 # ENGINE_OPENCV is disabled and why. The option ESSENTIAL_WITH_OPENCV_LOOP=OFF disables the
-# bridge without probing. The verdict is cached per OpenCV version and location; re-run CMake
-# after upgrading OpenCV (a changed version or directory re-probes by itself).
+# bridge without probing. The verdict is cached; a changed OpenCV version or directory, compiler,
+# declaration or probe re-probes by itself (re-run CMake after upgrading OpenCV).
 option(ESSENTIAL_WITH_OPENCV_LOOP
        "Let ENGINE_OPENCV run solvers in OpenCV's exported RANSAC loop (verified by a probe)" ON)
 
@@ -151,7 +151,11 @@ function(essential_probe_opencv_loop result_var)
     return()
   endif()
 
-  set(key "${OpenCV_VERSION};${OpenCV_DIR};${CMAKE_CXX_COMPILER}")
+  # Re-probe when OpenCV, the compiler, the declaration or the probe itself change.
+  file(SHA256 ${PROJECT_SOURCE_DIR}/modules/essential/src/ransac/opencv_point_set_registrator.hpp
+       declaration_hash)
+  string(SHA256 probe_hash "${_essential_probe_source}")
+  set(key "${OpenCV_VERSION};${OpenCV_DIR};${CMAKE_CXX_COMPILER};${declaration_hash};${probe_hash}")
   if(DEFINED CACHE{ESSENTIAL_OPENCV_LOOP_PROBE_KEY}
      AND "$CACHE{ESSENTIAL_OPENCV_LOOP_PROBE_KEY}" STREQUAL "${key}")
     set(passed "$CACHE{ESSENTIAL_OPENCV_LOOP_PROBE_PASSED}")
@@ -167,17 +171,23 @@ function(essential_probe_opencv_loop result_var)
       COMPILE_OUTPUT_VARIABLE compile_output
       RUN_OUTPUT_VARIABLE run_output)
     string(STRIP "${run_output}" run_output)
+    string(REGEX REPLACE "[\r\n]+" " | " run_output "${run_output}")
+    string(LENGTH "${run_output}" length)
+    if(length GREATER 300)
+      string(SUBSTRING "${run_output}" 0 300 run_output)
+      string(APPEND run_output "...")
+    endif()
     set(passed FALSE)
     if(NOT compile_result)
-      set(why "the probe program did not compile or link against OpenCV ${OpenCV_VERSION} "
-              "(are cv::createRANSACPointSetRegistrator and createLMeDSPointSetRegistrator "
-              "exported by libopencv_calib3d?)")
+      string(CONCAT why "the probe program did not compile or link against OpenCV "
+             "${OpenCV_VERSION} (are cv::createRANSACPointSetRegistrator and "
+             "createLMeDSPointSetRegistrator exported by libopencv_calib3d?)")
       file(WRITE ${dir}/compile_output.txt "${compile_output}")
       string(APPEND why "; compiler output in ${dir}/compile_output.txt")
     elseif(NOT run_result STREQUAL "0")
-      set(why "the probe program failed (exit status ${run_result}: ${run_output}); the "
-              "module's declaration of cv::PointSetRegistrator does not match OpenCV "
-              "${OpenCV_VERSION}'s")
+      string(CONCAT why "the probe program failed (exit status ${run_result}: ${run_output}); "
+             "the module's declaration of cv::PointSetRegistrator does not match OpenCV "
+             "${OpenCV_VERSION}'s")
     else()
       set(passed TRUE)
       set(why "${run_output}")

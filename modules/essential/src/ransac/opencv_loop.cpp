@@ -19,7 +19,9 @@
 //   confidence when the loop stops; the real confidence is 1 - (1 - confidence)^s, about 0.91
 //   instead of 0.999 for gn. The module's own loop divides by s; OpenCV's loop is used unchanged.
 // - its LMedS draws a fixed number of samples for an assumed 45% of outliers, the same formula
-//   without s, and floors the data-derived inlier threshold at 0.001 (normalised units here).
+//   without s, and floors the data-derived inlier threshold at 0.001 (normalised units here);
+// - it cannot be interrupted: SearchSettings::deadline is not honoured (findEssentialMatIter
+//   rejects a time budget with this engine).
 
 #include "ransac/search.hpp"
 

@@ -112,6 +112,8 @@ int main(int argc, char** argv)
             maxIters = std::atoi(v.c_str());
         else if (k == "--repeats")
             repeats = std::atoi(v.c_str());
+        else if (k == "--budget-ms")
+            budgetMs = std::atof(v.c_str());
         else if (k == "--offsets") {
             offsets.clear();
             for (const auto& o : split(v))

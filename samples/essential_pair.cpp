@@ -36,7 +36,8 @@ const char* const kUsage =
     "  --camera fx,fy,cx,cy  intrinsics of both images, in pixels\n"
     "  --camera-file F       a file holding `fx fy cx cy [width height]` on one line,\n"
     "                        or a 3 x 3 camera matrix as three lines of three numbers\n"
-    "  --solver NAME         minimal-set solver of cv::essential (default gn; see listSolvers)\n"
+    "  --solver NAME         solver of cv::essential, or a mix such as gn+nister\n"
+    "                        (default: the module's default, gn+nister)\n"
     "  --threshold PX        inlier threshold on the Sampson distance, pixels (default 1)\n"
     "  --seed S              seed of the estimator's random generator (decimal or 0x hex)\n"
     "  --keep FRACTION       fraction of the matches kept, the best by descriptor distance,\n"
@@ -247,12 +248,12 @@ Options parseOptions(int argc, char** argv)
                                     : "give only one of --camera and --camera-file",
              2);
 
-    const std::vector<std::string> solvers = cv::essential::listSolvers();
-    if (std::find(solvers.begin(), solvers.end(), options.solver) == solvers.end()) {
-        std::string known;
-        for (const std::string& name : solvers)
-            known += (known.empty() ? "" : ", ") + name;
-        fail("unknown solver '" + options.solver + "' (known: " + known + ")", 2);
+    // createSolver accepts registered names and composites ("gn+nister"); its message lists the
+    // registered solvers.
+    try {
+        cv::essential::createSolver(options.solver);
+    } catch (const cv::Exception& e) {
+        fail(e.err, 2);
     }
     return options;
 }

@@ -5,7 +5,7 @@
 // paper's synthetic protocol, both measured in the same run on the same problems, pose recovery
 // included on both sides.
 //
-//   essential_compare_opencv [--n 500] [--ratios 0.9,0.5,0.3] [--problems 200] [--solver gn]
+//   essential_compare_opencv [--n 500] [--ratios 0.9,0.5,0.3] [--problems 200] [--solver NAME]
 //                            [--opencv-methods RANSAC,USAC_MAGSAC] [--seed 1]
 //
 // A result is reliable when the rotation error is below 1 degree and the translation direction
@@ -40,7 +40,7 @@ struct Args
     int n = 500;
     std::vector<double> ratios = {0.9, 0.5, 0.3};
     int problems = 200;
-    std::string solver = "gn";
+    std::string solver = cv::essential::EssentialParams().solver; // the module default
     std::vector<std::string> opencvMethods = {"RANSAC"};
     uint64_t seed = 1;
 };

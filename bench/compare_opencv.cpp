@@ -14,6 +14,7 @@
 
 #include "synthetic_scene.hpp"
 
+#include "bench_common.hpp"
 #include <opencv2/calib3d.hpp>
 #include <opencv2/essential.hpp>
 
@@ -26,6 +27,8 @@
 #include <sstream>
 #include <string>
 #include <vector>
+
+using namespace essential_bench;
 
 namespace {
 
@@ -44,16 +47,6 @@ struct Args
     std::vector<std::string> opencvMethods = {"RANSAC"};
     uint64_t seed = 1;
 };
-
-std::vector<std::string> split(const std::string& s)
-{
-    std::vector<std::string> out;
-    std::stringstream ss(s);
-    std::string item;
-    while (std::getline(ss, item, ','))
-        out.push_back(item);
-    return out;
-}
 
 Args parse(int argc, char** argv)
 {
@@ -107,12 +100,6 @@ Outcome run(const essential_test::SyntheticScene& s,
         o.transErr = essential_test::translationErrorDeg(cv::Vec3d(t), s.t);
     }
     return o;
-}
-
-double median(std::vector<double> v)
-{
-    std::sort(v.begin(), v.end());
-    return v.empty() ? 0 : v[v.size() / 2];
 }
 
 struct Row

@@ -13,6 +13,7 @@
 
 #include "synthetic_scene.hpp"
 
+#include "bench_common.hpp"
 #include <opencv2/essential.hpp>
 
 #include <algorithm>
@@ -23,25 +24,9 @@
 #include <string>
 #include <vector>
 
+using namespace essential_bench;
+
 namespace {
-
-std::vector<std::string> split(const std::string& s)
-{
-    std::vector<std::string> out;
-    std::stringstream ss(s);
-    std::string item;
-    while (std::getline(ss, item, ','))
-        out.push_back(item);
-    return out;
-}
-
-std::vector<double> numbers(const std::string& s)
-{
-    std::vector<double> out;
-    for (const auto& x : split(s))
-        out.push_back(std::atof(x.c_str()));
-    return out;
-}
 
 struct Outcome
 {
@@ -67,13 +52,6 @@ Outcome runAll(const std::vector<essential_test::SyntheticScene>& scenes,
     }
     std::sort(o.ms.begin(), o.ms.end());
     return o;
-}
-
-double percentile(const std::vector<double>& sorted, double p)
-{
-    const size_t i =
-        std::min(sorted.size() - 1, static_cast<size_t>(p * (sorted.size() - 1) + 0.5));
-    return sorted[i];
 }
 
 } // namespace

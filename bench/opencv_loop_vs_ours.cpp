@@ -17,6 +17,7 @@
 
 #include "synthetic_scene.hpp"
 
+#include "bench_common.hpp"
 #include <opencv2/essential.hpp>
 
 #include <algorithm>
@@ -26,6 +27,8 @@
 #include <sstream>
 #include <string>
 #include <vector>
+
+using namespace essential_bench;
 
 namespace {
 
@@ -38,16 +41,6 @@ struct Args
     int method = cv::RANSAC;
     uint64_t seed = 1;
 };
-
-std::vector<std::string> split(const std::string& s)
-{
-    std::vector<std::string> out;
-    std::stringstream ss(s);
-    std::string item;
-    while (std::getline(ss, item, ','))
-        out.push_back(item);
-    return out;
-}
 
 Args parse(int argc, char** argv)
 {
@@ -108,12 +101,6 @@ Outcome run(const essential_test::SyntheticScene& s, const cv::essential::Essent
         o.transErr = essential_test::translationErrorDeg(cv::Vec3d(t), s.t);
     }
     return o;
-}
-
-double median(std::vector<double> v)
-{
-    std::sort(v.begin(), v.end());
-    return v.empty() ? 0 : v[v.size() / 2];
 }
 
 struct Row

@@ -15,6 +15,7 @@
 
 #include "frontend/frontend.hpp"
 
+#include "bench_common.hpp"
 #include <opencv2/essential.hpp>
 #include <opencv2/imgcodecs.hpp>
 
@@ -29,17 +30,9 @@
 #include <string>
 #include <vector>
 
-namespace {
+using namespace essential_bench;
 
-std::vector<std::string> split(const std::string& s)
-{
-    std::vector<std::string> out;
-    std::stringstream ss(s);
-    std::string item;
-    while (std::getline(ss, item, ','))
-        out.push_back(item);
-    return out;
-}
+namespace {
 
 struct Pose
 {

@@ -13,6 +13,7 @@
 
 #include "synthetic_scene.hpp"
 
+#include "bench_common.hpp"
 #include <opencv2/essential.hpp>
 
 #include <algorithm>
@@ -23,17 +24,9 @@
 #include <string>
 #include <vector>
 
-namespace {
+using namespace essential_bench;
 
-std::vector<std::string> split(const std::string& s)
-{
-    std::vector<std::string> out;
-    std::stringstream ss(s);
-    std::string item;
-    while (std::getline(ss, item, ','))
-        out.push_back(item);
-    return out;
-}
+namespace {
 
 struct Run
 {

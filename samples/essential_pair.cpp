@@ -1,9 +1,10 @@
 // This file is part of opencv_essential, licensed under the Apache License, Version 2.0.
 // See the LICENSE file at the top of the source tree.
 //
-// essential_pair: the relative pose of two calibrated images. FAST-9 corners and ORB descriptors on
-// an image pyramid, brute-force matching, then cv::essential::findEssentialMatIter; the same
-// matches also go through cv::findEssentialMat + cv::recoverPose for comparison.
+// essential_pair: the relative pose of two calibrated images. FAST-9 corners and BRIEF descriptors
+// on an image pyramid, brute-force matching, then cv::essential::findEssentialMatIter; the same
+// matches also go through cv::findEssentialMat + cv::recoverPose for comparison. Prints text or one
+// JSON object (--json), and optionally draws the matches and epipolar lines (--draw).
 
 #include "frontend/frontend.hpp"
 
@@ -11,6 +12,9 @@
 #include <opencv2/core.hpp>
 #include <opencv2/essential.hpp>
 #include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cerrno>
@@ -31,7 +35,8 @@ namespace {
 const char* const kUsage =
     "usage: essential_pair IMG1 IMG2 (--camera fx,fy,cx,cy | --camera-file F)\n"
     "                      [--solver NAME] [--threshold PX] [--seed S] [--keep FRACTION]\n"
-    "                      [--max-iters N]\n"
+    "                      [--max-iters N] [--budget-ms T] [--descriptor brief|orb|patch]\n"
+    "                      [--json] [--draw OUT.png]\n"
     "\n"
     "  --camera fx,fy,cx,cy  intrinsics of both images, in pixels\n"
     "  --camera-file F       a file holding `fx fy cx cy [width height]` on one line,\n"
@@ -42,7 +47,19 @@ const char* const kUsage =
     "  --seed S              seed of the estimator's random generator (decimal or 0x hex)\n"
     "  --keep FRACTION       fraction of the matches kept, the best by descriptor distance,\n"
     "                        in (0, 1] (default 0.2)\n"
-    "  --max-iters N         iteration cap of both estimators (default 1000, as OpenCV)\n";
+    "  --max-iters N         iteration cap of both estimators (default 1000, as OpenCV)\n"
+    "  --budget-ms T         time budget of cv::essential in milliseconds: the search then\n"
+    "                        stops when the budget is spent (or, on easy data, once it is\n"
+    "                        1 - 1e-12 confident; no iteration cap unless --max-iters is\n"
+    "                        given); OpenCV has no budget\n"
+    "  --descriptor D        front-end descriptor: brief (upright, default), orb (rBRIEF)\n"
+    "                        or patch (normalised 8 x 8 grey patch)\n"
+    "  --json                print the results as one JSON object instead of text\n"
+    "  --draw OUT.png        write both images side by side: inlier matches green, outliers\n"
+    "                        red (a sample of at most 200), epipolar lines of 8 inliers in\n"
+    "                        both images in other colours\n"
+    "\n"
+    "exit status: 0 pose found, 1 input error, 2 usage error, 3 no essential matrix found\n";
 
 // A usage or input error: main() prints its message as one line and exits with `code`.
 struct Failure
@@ -181,6 +198,11 @@ struct Options
     std::uint64_t seed = cv::essential::EssentialParams().seed;
     double keep = essential_samples::FrontEndParams().keepFraction;
     int maxIters = cv::essential::EssentialParams().maxIters;
+    bool maxItersGiven = false;
+    double budgetMs = 0;
+    essential_samples::Descriptor descriptor = essential_samples::FrontEndParams().descriptor;
+    bool json = false;
+    std::string draw;
 };
 
 Options parseOptions(int argc, char** argv)
@@ -192,6 +214,10 @@ Options parseOptions(int argc, char** argv)
         if (arg == "-h" || arg == "--help") {
             std::cout << kUsage;
             std::exit(0);
+        }
+        if (arg == "--json") {
+            options.json = true;
+            continue;
         }
         if (arg.rfind("--", 0) != 0 || arg.size() == 2) {
             positional.push_back(arg);
@@ -234,6 +260,17 @@ Options parseOptions(int argc, char** argv)
             if (value.empty() || errno != 0 || *end != '\0' || iters < 1 || iters > 100000000)
                 fail("--max-iters must be a positive integer, not '" + value + "'", 2);
             options.maxIters = static_cast<int>(iters);
+            options.maxItersGiven = true;
+        } else if (arg == "--budget-ms") {
+            if (!parseDouble(value, options.budgetMs) || !(options.budgetMs > 0.0))
+                fail("--budget-ms must be a positive number of milliseconds, not '" + value + "'",
+                     2);
+        } else if (arg == "--descriptor") {
+            if (!essential_samples::parseDescriptor(value, options.descriptor))
+                fail("--descriptor must be brief, orb or patch, not '" + value + "'", 2);
+        } else if (arg == "--draw") {
+            if (value.empty()) fail("--draw needs an output file name", 2);
+            options.draw = value;
         } else {
             fail("unknown option '" + arg + "' (see --help)", 2);
         }
@@ -295,6 +332,125 @@ double percent(int part, int whole)
     return whole > 0 ? 100.0 * part / whole : 0.0;
 }
 
+nlohmann::json matrixJson(const cv::Matx33d& m)
+{
+    nlohmann::json rows = nlohmann::json::array();
+    for (int r = 0; r < 3; ++r)
+        rows.push_back({m(r, 0), m(r, 1), m(r, 2)});
+    return rows;
+}
+
+nlohmann::json vectorJson(const cv::Vec3d& v)
+{
+    return {v[0], v[1], v[2]};
+}
+
+// Draws the line a x + b y + c = 0 across the image region `roi` of `canvas` (line coordinates are
+// those of the image, whose top-left corner is at roi.tl()).
+void drawLineInRegion(cv::Mat& canvas, const cv::Rect& roi, const cv::Vec3d& line,
+                      const cv::Scalar& colour)
+{
+    const double a = line[0], b = line[1], c = line[2];
+    cv::Point2d p1, p2;
+    if (std::abs(b) > std::abs(a)) { // closer to horizontal: intersect x = 0 and x = width - 1
+        p1 = cv::Point2d(0, -c / b);
+        p2 = cv::Point2d(roi.width - 1, -(c + a * (roi.width - 1)) / b);
+    } else if (a != 0.0) {
+        p1 = cv::Point2d(-c / a, 0);
+        p2 = cv::Point2d(-(c + b * (roi.height - 1)) / a, roi.height - 1);
+    } else {
+        return;
+    }
+    cv::Mat region = canvas(roi);
+    // Fixed-point coordinates (4 fractional bits) keep the sub-pixel position; clipLine inside
+    // cv::line handles points far outside the region.
+    const double s = 16.0;
+    const auto clamp = [](double v) { return std::max(-1e8, std::min(1e8, v)); };
+    cv::line(region, cv::Point(cvRound(clamp(p1.x * s)), cvRound(clamp(p1.y * s))),
+             cv::Point(cvRound(clamp(p2.x * s)), cvRound(clamp(p2.y * s))), colour, 1, cv::LINE_AA,
+             4);
+}
+
+// Both (grey) images side by side; inlier matches green, outliers red (at most 200 drawn; inliers
+// at most 400), the epipolar lines of up to 8 inliers spread over image 1 in both images, one
+// colour per correspondence.
+void drawResult(const std::string& path, const cv::Mat& image1, const cv::Mat& image2,
+                const essential_samples::Matches& matches, const cv::Mat& mask,
+                const cv::Matx33d& K, const cv::Matx33d& E, bool found)
+{
+    const int width = image1.cols + image2.cols;
+    const int height = std::max(image1.rows, image2.rows);
+    cv::Mat canvas(height, width, CV_8UC3, cv::Scalar::all(0));
+    const cv::Rect roi1(0, 0, image1.cols, image1.rows);
+    const cv::Rect roi2(image1.cols, 0, image2.cols, image2.rows);
+    cv::cvtColor(image1, canvas(roi1), cv::COLOR_GRAY2BGR);
+    cv::cvtColor(image2, canvas(roi2), cv::COLOR_GRAY2BGR);
+    canvas *= 0.75; // dim the images a little so that the lines stand out
+
+    const int n = static_cast<int>(matches.points1.size());
+    const auto isInlier = [&](int i) { return found && !mask.empty() && mask.at<uchar>(i) != 0; };
+    const cv::Point2f shift(static_cast<float>(image1.cols), 0.f);
+    const int shiftBits = 4;
+    const auto fixedPoint = [&](cv::Point2f p) {
+        return cv::Point(cvRound(p.x * (1 << shiftBits)), cvRound(p.y * (1 << shiftBits)));
+    };
+
+    // Outliers first (a sample: the matches are in random order), then the inliers on top.
+    const int maxOutliers = 200;
+    int outliersDrawn = 0;
+    for (int i = 0; i < n && outliersDrawn < maxOutliers; ++i) {
+        if (isInlier(i)) continue;
+        cv::line(canvas, fixedPoint(matches.points1[i]), fixedPoint(matches.points2[i] + shift),
+                 cv::Scalar(0, 0, 255), 1, cv::LINE_AA, shiftBits);
+        ++outliersDrawn;
+    }
+    const int maxInliers = 400;
+    int inliersDrawn = 0;
+    for (int i = 0; i < n && inliersDrawn < maxInliers; ++i) {
+        if (!isInlier(i)) continue;
+        cv::line(canvas, fixedPoint(matches.points1[i]), fixedPoint(matches.points2[i] + shift),
+                 cv::Scalar(0, 220, 0), 1, cv::LINE_AA, shiftBits);
+        ++inliersDrawn;
+    }
+
+    if (found) {
+        // Up to 8 inliers, picked on a 4 x 2 grid of image 1 so that the lines spread out.
+        const cv::Matx33d Kinv = K.inv();
+        const cv::Matx33d F = Kinv.t() * E * Kinv;
+        const cv::Scalar palette[] = {{255, 255, 0}, {0, 255, 255},  {255, 0, 255},
+                                      {255, 160, 0}, {0, 160, 255},  {255, 255, 255},
+                                      {160, 0, 255}, {128, 255, 128}};
+        int drawn = 0;
+        for (int cell = 0; cell < 8; ++cell) {
+            const cv::Rect2f area(float(image1.cols * (cell % 4) / 4.0),
+                                  float(image1.rows * (cell / 4) / 2.0), float(image1.cols / 4.0),
+                                  float(image1.rows / 2.0));
+            for (int i = 0; i < n; ++i) {
+                if (!isInlier(i) || !area.contains(matches.points1[i])) continue;
+                const cv::Vec3d x1(matches.points1[i].x, matches.points1[i].y, 1.0);
+                const cv::Vec3d x2(matches.points2[i].x, matches.points2[i].y, 1.0);
+                const cv::Scalar& colour = palette[drawn % 8];
+                drawLineInRegion(canvas, roi2, F * x1, colour);     // in image 2
+                drawLineInRegion(canvas, roi1, F.t() * x2, colour); // in image 1
+                cv::circle(canvas, fixedPoint(matches.points1[i]), 4 << shiftBits, colour, 2,
+                           cv::LINE_AA, shiftBits);
+                cv::circle(canvas, fixedPoint(matches.points2[i] + shift), 4 << shiftBits, colour,
+                           2, cv::LINE_AA, shiftBits);
+                ++drawn;
+                break;
+            }
+        }
+    }
+
+    bool written = false;
+    try {
+        written = cv::imwrite(path, canvas);
+    } catch (const cv::Exception& e) {
+        fail("cannot write '" + path + "': " + e.err);
+    }
+    if (!written) fail("cannot write '" + path + "' (unknown extension or unwritable path)");
+}
+
 int run(int argc, char** argv)
 {
     const Options options = parseOptions(argc, argv);
@@ -305,18 +461,22 @@ int run(int argc, char** argv)
                               : parseCameraOption(options.camera);
     const cv::Mat image1 = readImage(options.image1);
     const cv::Mat image2 = readImage(options.image2);
+    // Different image sizes are fine for the estimator (one camera matrix, pixel coordinates);
+    // what matters is that the camera file, when it states a size, is for these images.
+    std::vector<std::string> warnings;
     if (cameraImageSize.area() > 0 &&
         (image1.size() != cameraImageSize || image2.size() != cameraImageSize))
-        std::cerr << "essential_pair: warning: the camera file is for " << cameraImageSize.width
-                  << " x " << cameraImageSize.height << " images\n";
-
-    std::printf("images: %s (%d x %d), %s (%d x %d)\n", options.image1.c_str(), image1.cols,
-                image1.rows, options.image2.c_str(), image2.cols, image2.rows);
-    std::printf("camera: fx %.3f, fy %.3f, cx %.3f, cy %.3f\n", K(0, 0), K(1, 1), K(0, 2), K(1, 2));
+        warnings.push_back("the camera file is for " + std::to_string(cameraImageSize.width) +
+                           " x " + std::to_string(cameraImageSize.height) + " images");
+    if (image1.size() != image2.size())
+        warnings.push_back("the images differ in size; one camera matrix is used for both");
+    for (const std::string& warning : warnings)
+        std::cerr << "essential_pair: warning: " << warning << "\n";
 
     // Front end.
     essential_samples::FrontEndParams frontParams;
     frontParams.keepFraction = options.keep;
+    frontParams.descriptor = options.descriptor;
     auto start = std::chrono::steady_clock::now();
     const essential_samples::Features features1 =
         essential_samples::detectAndDescribe(image1, frontParams);
@@ -329,12 +489,6 @@ int run(int argc, char** argv)
     const essential_samples::Matches matches =
         essential_samples::matchFeatures(features1, features2, frontParams);
     const double timeMatching = elapsedMs(start);
-
-    std::printf("corners: %zu in image 1, %zu in image 2 (FAST-9 on %d pyramid levels)\n",
-                features1.keypoints.size(), features2.keypoints.size(), features1.levels);
-    std::printf("matches: %zu (best %.0f%% of %d by Hamming distance, up to %d)\n",
-                matches.points1.size(), 100.0 * options.keep, matches.candidates,
-                matches.maxDistance);
     const int n = static_cast<int>(matches.points1.size());
     if (n < 5) fail("only " + std::to_string(n) + " matches; at least 5 are needed");
 
@@ -344,17 +498,143 @@ int run(int argc, char** argv)
     params.threshold = options.threshold;
     params.seed = options.seed;
     params.maxIters = options.maxIters;
+    if (options.budgetMs > 0) {
+        // The budget, not the confidence or (unless given) the cap, ends the search.
+        params.timeBudgetMs = options.budgetMs;
+        params.confidence = 1.0 - 1e-12;
+        if (!options.maxItersGiven) params.maxIters = 100000000;
+    }
     cv::essential::EssentialReport report;
     cv::Mat mask;
     start = std::chrono::steady_clock::now();
     const cv::Mat E = cv::essential::findEssentialMatIter(matches.points1, matches.points2, K,
                                                           params, mask, &report);
     const double timeEssential = elapsedMs(start);
+    const bool found = !E.empty() && report.success;
+
+    // OpenCV on the same matches.
+    cv::Mat cvMask;
+    start = std::chrono::steady_clock::now();
+    const cv::Mat cvE = cv::findEssentialMat(matches.points1, matches.points2, K, cv::RANSAC, 0.999,
+                                             options.threshold, options.maxIters, cvMask);
+    const double timeCvEssential = elapsedMs(start);
+    const int cvInliers = cvMask.empty() ? 0 : cv::countNonZero(cvMask);
+    cv::Mat cvR, cvT;
+    int cvInFront = 0;
+    double timeCvPose = 0.0;
+    const bool cvFound = cvE.rows == 3 && cvE.cols == 3;
+    if (cvFound) {
+        start = std::chrono::steady_clock::now();
+        cvInFront = cv::recoverPose(cvE, matches.points1, matches.points2, K, cvR, cvT, cvMask);
+        timeCvPose = elapsedMs(start);
+    }
+    const bool compared = found && report.poseRecovered && cvFound;
+    const double rotationDiff = compared ? rotationAngleDeg(report.R, cv::Matx33d(cvR)) : 0.0;
+    const double translationDiff = compared ? directionAngleDeg(report.t, cv::Vec3d(cvT)) : 0.0;
+
+    if (!options.draw.empty())
+        drawResult(options.draw, image1, image2, matches, mask, K, report.E, found);
+
+    const char* distanceName =
+        features1.descriptor == essential_samples::Descriptor::Patch ? "L2" : "Hamming";
+    const std::string budgetNote =
+        options.budgetMs > 0
+            ? "time budget " + cv::format("%g", options.budgetMs) +
+                  " ms: the search stops when the budget is spent or at confidence 1 - 1e-12 (" +
+                  (options.maxItersGiven ? "cap --max-iters" : "no iteration cap") + ")"
+            : std::string("no time budget: the search stops at confidence 0.999 or the cap");
+
+    if (options.json) {
+        nlohmann::json out;
+        out["images"] = {
+            {{"path", options.image1}, {"width", image1.cols}, {"height", image1.rows}},
+            {{"path", options.image2}, {"width", image2.cols}, {"height", image2.rows}}};
+        out["camera"] = {{"fx", K(0, 0)}, {"fy", K(1, 1)}, {"cx", K(0, 2)}, {"cy", K(1, 2)}};
+        out["warnings"] = warnings;
+        out["frontend"] = {{"detector", "FAST-9 pyramid"},
+                           {"levels", features1.levels},
+                           {"descriptor", essential_samples::descriptorName(features1.descriptor)},
+                           {"corners", {features1.keypoints.size(), features2.keypoints.size()}},
+                           {"candidates", matches.candidates},
+                           {"keep_fraction", options.keep},
+                           {"matches", n},
+                           {"max_distance", matches.maxDistance}};
+        nlohmann::json ours = {{"solver", params.solver},
+                               {"threshold_px", params.threshold},
+                               {"seed", params.seed},
+                               {"max_iters", params.maxIters},
+                               {"confidence", params.confidence},
+                               {"budget_ms", options.budgetMs},
+                               {"stopping", budgetNote},
+                               {"found", found},
+                               {"pose_recovered", found && report.poseRecovered},
+                               {"inliers", report.inliers},
+                               {"inlier_ratio", n > 0 ? double(report.inliers) / n : 0.0},
+                               {"points_in_front", report.pointsInFront},
+                               {"iterations", report.iterations},
+                               {"hypotheses_generated", report.hypothesesGenerated},
+                               {"hypotheses_converged", report.hypothesesConverged},
+                               {"hypotheses_scored", report.hypothesesScored},
+                               {"refine_iterations", report.refineIterations}};
+        if (found) ours["E"] = matrixJson(report.E);
+        if (found && report.poseRecovered) {
+            ours["R"] = matrixJson(report.R);
+            ours["t"] = vectorJson(report.t);
+        }
+        out["essential"] = ours;
+        nlohmann::json reference = {{"method", "RANSAC"},
+                                    {"confidence", 0.999},
+                                    {"threshold_px", options.threshold},
+                                    {"max_iters", options.maxIters},
+                                    {"found", cvFound},
+                                    {"inliers", cvInliers},
+                                    {"inlier_ratio", n > 0 ? double(cvInliers) / n : 0.0},
+                                    {"points_in_front", cvInFront}};
+        if (cvFound) {
+            const cv::Mat cvEn = cvE / cv::norm(cvE) * std::sqrt(2.0);
+            reference["E"] = matrixJson(cv::Matx33d(cvEn));
+            reference["R"] = matrixJson(cv::Matx33d(cvR));
+            reference["t"] = vectorJson(cv::Vec3d(cvT));
+        }
+        out["opencv"] = reference;
+        out["difference"] = compared
+                                ? nlohmann::json{{"rotation_deg", rotationDiff},
+                                                 {"translation_direction_deg", translationDiff}}
+                                : nlohmann::json(nullptr);
+        out["times_ms"] = {{"frontend",
+                            {{"total", timeFeatures1 + timeFeatures2 + timeMatching},
+                             {"image1", timeFeatures1},
+                             {"image2", timeFeatures2},
+                             {"matching", timeMatching}}},
+                           {"essential",
+                            {{"total", timeEssential},
+                             {"setup", report.timeSetupMs},
+                             {"search", report.timeSearchMs},
+                             {"refine", report.timeRefineMs},
+                             {"pose", report.timePoseMs}}},
+                           {"opencv",
+                            {{"total", timeCvEssential + timeCvPose},
+                             {"findEssentialMat", timeCvEssential},
+                             {"recoverPose", timeCvPose}}}};
+        if (!options.draw.empty()) out["drawing"] = options.draw;
+        std::cout << out.dump(2) << "\n";
+        return found ? 0 : 3;
+    }
+
+    std::printf("images: %s (%d x %d), %s (%d x %d)\n", options.image1.c_str(), image1.cols,
+                image1.rows, options.image2.c_str(), image2.cols, image2.rows);
+    std::printf("camera: fx %.3f, fy %.3f, cx %.3f, cy %.3f\n", K(0, 0), K(1, 1), K(0, 2), K(1, 2));
+    std::printf("corners: %zu in image 1, %zu in image 2 (FAST-9 on %d pyramid levels, %s)\n",
+                features1.keypoints.size(), features2.keypoints.size(), features1.levels,
+                essential_samples::descriptorName(features1.descriptor));
+    std::printf("matches: %d (best %.0f%% of %d by %s distance, up to %g)\n", n,
+                100.0 * options.keep, matches.candidates, distanceName,
+                static_cast<double>(matches.maxDistance));
 
     std::printf("\ncv::essential::findEssentialMatIter (solver %s, threshold %g px, seed 0x%llx)\n",
                 params.solver.c_str(), params.threshold,
                 static_cast<unsigned long long>(params.seed));
-    const bool found = !E.empty() && report.success;
+    std::printf("%s\n", budgetNote.c_str());
     if (found) {
         std::printf("E =\n%s", formatMatrix(cv::Mat(report.E)).c_str());
         if (report.poseRecovered) {
@@ -373,23 +653,6 @@ int run(int argc, char** argv)
                 report.hypothesesGenerated, report.hypothesesConverged, report.hypothesesScored,
                 report.iterations, report.refineIterations);
 
-    // OpenCV on the same matches.
-    cv::Mat cvMask;
-    start = std::chrono::steady_clock::now();
-    const cv::Mat cvE = cv::findEssentialMat(matches.points1, matches.points2, K, cv::RANSAC, 0.999,
-                                             options.threshold, options.maxIters, cvMask);
-    const double timeCvEssential = elapsedMs(start);
-    const int cvInliers = cvMask.empty() ? 0 : cv::countNonZero(cvMask);
-    cv::Mat cvR, cvT;
-    int cvInFront = 0;
-    double timeCvPose = 0.0;
-    const bool cvFound = cvE.rows == 3 && cvE.cols == 3;
-    if (cvFound) {
-        start = std::chrono::steady_clock::now();
-        cvInFront = cv::recoverPose(cvE, matches.points1, matches.points2, K, cvR, cvT, cvMask);
-        timeCvPose = elapsedMs(start);
-    }
-
     std::printf("\ncv::findEssentialMat + cv::recoverPose (RANSAC, prob 0.999, threshold %g px)\n",
                 options.threshold);
     if (cvFound) {
@@ -401,10 +664,9 @@ int run(int argc, char** argv)
     }
     std::printf("inliers: %d of %d (%.1f%%), %d in front of both cameras\n", cvInliers, n,
                 percent(cvInliers, n), cvInFront);
-    if (found && report.poseRecovered && cvFound)
-        std::printf("difference: rotation %.3f deg, translation direction %.3f deg\n",
-                    rotationAngleDeg(report.R, cv::Matx33d(cvR)),
-                    directionAngleDeg(report.t, cv::Vec3d(cvT)));
+    if (compared)
+        std::printf("difference: rotation %.3f deg, translation direction %.3f deg\n", rotationDiff,
+                    translationDiff);
 
     std::printf("\ntimes (ms):\n");
     std::printf("  front end        %9.2f  (image 1 %.2f, image 2 %.2f, matching %.2f)\n",
@@ -415,6 +677,7 @@ int run(int argc, char** argv)
                 report.timePoseMs);
     std::printf("  OpenCV           %9.2f  (findEssentialMat %.2f, recoverPose %.2f)\n",
                 timeCvEssential + timeCvPose, timeCvEssential, timeCvPose);
+    if (!options.draw.empty()) std::printf("\ndrawing: %s\n", options.draw.c_str());
     return found ? 0 : 3;
 }
 

@@ -53,7 +53,77 @@ float intensityCentroidAngle(const cv::Mat& image, int x, int y)
     return static_cast<float>(angle);
 }
 
+// The grey patch: kPatchGrid x kPatchGrid samples kPatchStep pixels apart, on the level smoothed
+// with a Gaussian of sigma kPatchSigma.
+const int kPatchGrid = 8;
+const int kPatchStep = 2;
+const double kPatchSigma = 1.2;
+
+// Describes `keypoints` (level coordinates, all at least `border` from the edges) by normalised
+// grey patches of the smoothed level; drops the corners whose patch is flat.
+void describePatches(const cv::Mat& levelImage, std::vector<cv::KeyPoint>& keypoints,
+                     cv::Mat& descriptors)
+{
+    cv::Mat smooth;
+    cv::GaussianBlur(levelImage, smooth, cv::Size(), kPatchSigma, kPatchSigma,
+                     cv::BORDER_REFLECT_101);
+    const int half = (kPatchGrid - 1) * kPatchStep / 2; // 7: samples at -7, -5, ..., 7
+    std::vector<cv::KeyPoint> kept;
+    kept.reserve(keypoints.size());
+    descriptors.create(static_cast<int>(keypoints.size()), kPatchGrid * kPatchGrid, CV_32F);
+    int rows = 0;
+    for (const cv::KeyPoint& kp : keypoints) {
+        const int x0 = cvRound(kp.pt.x) - half, y0 = cvRound(kp.pt.y) - half;
+        float* d = descriptors.ptr<float>(rows);
+        double sum = 0.0;
+        for (int i = 0; i < kPatchGrid; ++i) {
+            const uchar* row = smooth.ptr<uchar>(y0 + i * kPatchStep);
+            for (int j = 0; j < kPatchGrid; ++j) {
+                d[i * kPatchGrid + j] = row[x0 + j * kPatchStep];
+                sum += row[x0 + j * kPatchStep];
+            }
+        }
+        const float mean = static_cast<float>(sum / (kPatchGrid * kPatchGrid));
+        double norm2 = 0.0;
+        for (int k = 0; k < kPatchGrid * kPatchGrid; ++k) {
+            d[k] -= mean;
+            norm2 += double(d[k]) * d[k];
+        }
+        if (norm2 < 1e-6) continue; // flat: no descriptor
+        const float scale = static_cast<float>(1.0 / std::sqrt(norm2));
+        for (int k = 0; k < kPatchGrid * kPatchGrid; ++k)
+            d[k] *= scale;
+        kept.push_back(kp);
+        ++rows;
+    }
+    descriptors = descriptors.rowRange(0, rows).clone();
+    keypoints.swap(kept);
+}
+
 } // namespace
+
+const char* descriptorName(Descriptor descriptor)
+{
+    switch (descriptor) {
+    case Descriptor::UprightBrief:
+        return "brief";
+    case Descriptor::RotatedBrief:
+        return "orb";
+    case Descriptor::Patch:
+        return "patch";
+    }
+    return "?";
+}
+
+bool parseDescriptor(const std::string& name, Descriptor& descriptor)
+{
+    for (Descriptor d : {Descriptor::UprightBrief, Descriptor::RotatedBrief, Descriptor::Patch})
+        if (name == descriptorName(d)) {
+            descriptor = d;
+            return true;
+        }
+    return false;
+}
 
 std::vector<double> pyramidScales(cv::Size imageSize, int minLevelSize)
 {
@@ -92,6 +162,8 @@ Features detectAndDescribe(const cv::Mat& image, const FrontEndParams& params)
         cv::ORB::create(500, 1.2f, 1, params.border, 0, 2, cv::ORB::HARRIS_SCORE, kPatchSize);
 
     Features features;
+    features.descriptor = params.descriptor;
+    const bool rotated = params.descriptor == Descriptor::RotatedBrief;
     const std::vector<double> scales = pyramidScales(gray.size(), params.minLevelSize);
     features.levels = static_cast<int>(scales.size());
 
@@ -119,15 +191,18 @@ Features detectAndDescribe(const cv::Mat& image, const FrontEndParams& params)
             if (!inside.contains(kp.pt)) continue;
             kp.octave = 0; // ORB picks the level of its own (one-level) pyramid from this
             kp.size = static_cast<float>(kPatchSize);
-            kp.angle = params.upright
-                           ? 0.0f
-                           : intensityCentroidAngle(levelImage, cvRound(kp.pt.x), cvRound(kp.pt.y));
+            kp.angle = rotated
+                           ? intensityCentroidAngle(levelImage, cvRound(kp.pt.x), cvRound(kp.pt.y))
+                           : 0.0f;
             keypoints.push_back(kp);
         }
         if (keypoints.empty()) continue;
 
         cv::Mat descriptors;
-        orb->compute(levelImage, keypoints, descriptors);
+        if (params.descriptor == Descriptor::Patch)
+            describePatches(levelImage, keypoints, descriptors);
+        else
+            orb->compute(levelImage, keypoints, descriptors);
         if (keypoints.empty()) continue;
 
         // Back to level-0 pixel coordinates (pixel centres at integers on every level).
@@ -150,11 +225,14 @@ Matches matchFeatures(const Features& features1, const Features& features2,
 {
     checkParams(params);
     Matches result;
+    if (features1.descriptor != features2.descriptor)
+        throw std::invalid_argument("front end: the two feature sets hold different descriptors");
     if (features1.keypoints.empty() || features2.keypoints.empty()) return result;
 
     // Every corner of image 2 against every corner of image 1; the nearest wins, however far.
     std::vector<cv::DMatch> matches;
-    cv::BFMatcher matcher(cv::NORM_HAMMING, false);
+    cv::BFMatcher matcher(
+        features1.descriptor == Descriptor::Patch ? cv::NORM_L2 : cv::NORM_HAMMING, false);
     matcher.match(features2.descriptors, features1.descriptors, matches);
     result.candidates = static_cast<int>(matches.size());
 
@@ -180,9 +258,8 @@ Matches matchFeatures(const Features& features1, const Features& features2,
     for (const cv::DMatch& m : matches) {
         result.points1.push_back(features1.keypoints[m.trainIdx].pt);
         result.points2.push_back(features2.keypoints[m.queryIdx].pt);
-        const int distance = cvRound(m.distance);
-        result.distances.push_back(distance);
-        result.maxDistance = std::max(result.maxDistance, distance);
+        result.distances.push_back(m.distance);
+        result.maxDistance = std::max(result.maxDistance, m.distance);
     }
     return result;
 }

@@ -1,8 +1,9 @@
 // This file is part of opencv_essential, licensed under the Apache License, Version 2.0.
 // See the LICENSE file at the top of the source tree.
 //
-// A small feature front end for the samples: FAST-9 corners on an image pyramid, an ORB (rBRIEF)
-// descriptor per corner, and brute-force matching that keeps the best fraction of the matches.
+// A small feature front end for the samples: FAST-9 corners on an image pyramid, a descriptor per
+// corner (upright BRIEF on ORB's pattern by default, ORB's rotated rBRIEF or a normalised grey
+// patch on request), and brute-force matching that keeps the best fraction of the matches.
 // It uses OpenCV only; nothing here is part of the opencv_essential library.
 
 #ifndef ESSENTIAL_SAMPLES_FRONTEND_HPP
@@ -11,9 +12,27 @@
 #include <opencv2/core.hpp>
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace essential_samples {
+
+/** The descriptor computed on every corner. */
+enum class Descriptor {
+    /** ORB's 256-bit BRIEF pattern, not rotated: binary, Hamming distance. */
+    UprightBrief,
+    /** ORB's rBRIEF: the same pattern rotated by the intensity-centroid orientation. */
+    RotatedBrief,
+    /** An 8 x 8 grey patch sampled every 2 pixels from the Gaussian-smoothed level (sigma 1.2),
+    zero mean and unit norm: float, L2 distance (a monotonic function of the NCC). */
+    Patch
+};
+
+/** "brief", "orb" or "patch". */
+const char* descriptorName(Descriptor descriptor);
+
+/** Parses "brief", "orb" or "patch"; false for anything else. */
+bool parseDescriptor(const std::string& name, Descriptor& descriptor);
 
 /** Settings of the front end. */
 struct FrontEndParams
@@ -32,9 +51,22 @@ struct FrontEndParams
     descriptor and are dropped. At least 16, the radius of the orientation patch plus one. */
     int border = 20;
 
-    /** Describe every corner without orientation (BRIEF on ORB's pattern, not rotated). The
-    default computes ORB's intensity-centroid orientation, so descriptors are rBRIEF. */
-    bool upright = false;
+    /** The descriptor. Upright BRIEF by default, chosen on the rail-a sequences (camera on a rail,
+    rotation below 1 degree; docs/FRONTEND.md, "Choice of the descriptor"): the fraction of the kept
+    matches within 1 px (Sampson) of the true E, mean of 4 pairs per offset,
+
+        offset N            1     5     10    20    40    60    mean
+        horizontal brief  0.999 0.980 0.955 0.876 0.686 0.579  0.846
+                   orb    0.996 0.960 0.898 0.700 0.453 0.380  0.731
+                   patch  0.997 0.947 0.887 0.788 0.627 0.565  0.802
+        optic      brief  0.994 0.975 0.947 0.904 0.754 0.571  0.857
+                   orb    0.992 0.959 0.922 0.832 0.589 0.364  0.776
+                   patch  0.992 0.955 0.918 0.860 0.714 0.548  0.831
+
+    Upright BRIEF is best at every offset, and also the fastest to compute with the patch (about
+    11 ms per 640 x 480 image against 27 ms for rBRIEF). Video from a rotating (hand-held)
+    camera may prefer RotatedBrief. */
+    Descriptor descriptor = Descriptor::UprightBrief;
 
     /** Fraction of the matches kept, the best by descriptor distance; in (0, 1]. */
     double keepFraction = 0.2;
@@ -53,16 +85,19 @@ struct Features
     /** Corners in level-0 pixel coordinates; `octave` is the pyramid level they were found on,
     `size` the descriptor patch diameter in level-0 pixels, `angle` the orientation in degrees. */
     std::vector<cv::KeyPoint> keypoints;
-    /** One 32-byte ORB descriptor (CV_8U row) per keypoint. */
+    /** One descriptor per keypoint: a 32-byte CV_8U row (BRIEF) or a 64-float CV_32F row (patch).
+     */
     cv::Mat descriptors;
+    /** Which descriptor `descriptors` holds. */
+    Descriptor descriptor = Descriptor::UprightBrief;
     /** Corners found by FAST on all levels, before the border filter. */
     int cornersDetected = 0;
     /** Number of pyramid levels. */
     int levels = 0;
 };
 
-/** Detects FAST-9 corners on every pyramid level of `image` (8-bit, 1 or 3 channels) and computes
-their ORB descriptors. */
+/** Detects FAST-9 corners on every pyramid level of `image` (8-bit, 1, 3 or 4 channels) and
+computes their descriptors (params.descriptor). */
 Features detectAndDescribe(const cv::Mat& image, const FrontEndParams& params = FrontEndParams());
 
 /** Matched correspondences, in random order. */
@@ -70,14 +105,15 @@ struct Matches
 {
     std::vector<cv::Point2f> points1; //!< in image 1 (level-0 pixel coordinates)
     std::vector<cv::Point2f> points2; //!< the corresponding points in image 2
-    std::vector<int> distances;       //!< Hamming distance of each kept match
+    std::vector<float> distances;     //!< descriptor distance of each kept match
     int candidates = 0;               //!< matches before the selection (one per corner of image 2)
-    int maxDistance = 0;              //!< largest distance kept
+    float maxDistance = 0;            //!< largest distance kept
 };
 
-/** Matches every corner of image 2 to its nearest corner of image 1 by Hamming distance (brute
-force, no distance limit, no ratio or cross check), keeps the best `keepFraction` of these matches
-and shuffles them with `shuffleSeed`. */
+/** Matches every corner of image 2 to its nearest corner of image 1 by descriptor distance (Hamming
+for BRIEF, L2 for the patch; brute force, no distance limit, no ratio or cross check), keeps the
+best `keepFraction` of these matches and shuffles them with `shuffleSeed`. Both feature sets must
+hold the same descriptor. */
 Matches matchFeatures(const Features& features1, const Features& features2,
                       const FrontEndParams& params = FrontEndParams());
 

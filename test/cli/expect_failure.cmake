@@ -1,0 +1,20 @@
+# Runs a command that must fail: non-zero exit status (EXPECT_CODE if given), and exactly one line
+# on stderr matching EXPECT_REGEX. Arguments: COMMAND (a ;-list), EXPECT_REGEX, EXPECT_CODE.
+# Licensed under the Apache License, Version 2.0.
+execute_process(COMMAND ${COMMAND} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+string(REPLACE ";" " " shown "${COMMAND}")
+if(code EQUAL 0)
+  message(FATAL_ERROR "'${shown}' succeeded; expected a failure")
+endif()
+if(DEFINED EXPECT_CODE AND NOT code STREQUAL EXPECT_CODE)
+  message(FATAL_ERROR "'${shown}' exited with ${code}, expected ${EXPECT_CODE}; stderr: ${err}")
+endif()
+if(NOT err MATCHES "${EXPECT_REGEX}")
+  message(FATAL_ERROR "stderr of '${shown}' does not match '${EXPECT_REGEX}': ${err}")
+endif()
+string(REGEX MATCHALL "\n" newlines "${err}")
+list(LENGTH newlines lines)
+if(NOT lines EQUAL 1)
+  message(FATAL_ERROR "stderr of '${shown}' is ${lines} lines, expected one: ${err}")
+endif()
+message(STATUS "exit ${code}: ${err}")

@@ -170,6 +170,11 @@ Mat estimate(const Problem& problem, const EssentialParams& params, OutputArray 
     settings.maxIters = params.maxIters;
     settings.preemptiveHypotheses = params.preemptiveHypotheses;
     settings.preemptiveBlockSize = params.preemptiveBlockSize;
+    settings.loIterations = params.loIterations;
+    settings.loSampleSize = params.loSampleSize;
+    settings.loScale = problem.threshold * kRefineScaleFraction;
+    settings.prosac = params.sampler == SAMPLING_PROSAC;
+    settings.sprt = params.sprt; // used by the adaptive MSAC loop only
     if (params.timeBudgetMs > 0)
         settings.deadline =
             ransac::Deadline::after(params.timeBudgetMs - msSince(start) - finishingReserveMs(n));
@@ -186,6 +191,10 @@ Mat estimate(const Problem& problem, const EssentialParams& params, OutputArray 
     rep.hypothesesGenerated = found.hypothesesGenerated;
     rep.hypothesesConverged = found.hypothesesConverged;
     rep.hypothesesScored = found.hypothesesScored;
+    rep.pointsScored = found.pointsScored;
+    rep.localOptimisations = found.localOptimisations;
+    rep.localOptimisationsKept = found.localOptimisationsKept;
+    rep.sprtRejections = found.sprtRejections;
     rep.timeSearchMs = msSince(tSearch);
     if (!found.found) {
         writeMask(mask, inliers);
@@ -241,6 +250,37 @@ Mat estimate(const Problem& problem, const EssentialParams& params, OutputArray 
     return toMat(E);
 }
 
+/** LO iterations of the USAC flags (the table in essential.hpp and docs/ENGINE.md), in the spirit
+of OpenCV's usac::setParameters: USAC_FAST fewer, USAC_ACCURATE more than the default. */
+constexpr int kUsacLoIterations = 5;
+constexpr int kUsacFastLoIterations = 2;
+constexpr int kUsacAccurateLoIterations = 10;
+
+/** The engine settings a USAC method flag stands for (see the table in essential.hpp). */
+void applyUsacFlag(int method, EssentialParams& p)
+{
+    switch (method) {
+    case USAC_DEFAULT:
+    case USAC_PARALLEL: // runs single-threaded
+    case USAC_FM_8PTS:  // an essential matrix all the same, from the configured solver
+    case USAC_MAGSAC:   // MSAC scoring with the given threshold
+        p.loIterations = kUsacLoIterations;
+        break;
+    case USAC_FAST:
+        p.loIterations = kUsacFastLoIterations;
+        break;
+    case USAC_ACCURATE:
+        p.loIterations = kUsacAccurateLoIterations;
+        break;
+    case USAC_PROSAC:
+        p.sampler = SAMPLING_PROSAC;
+        p.loIterations = kUsacLoIterations;
+        break;
+    default:
+        break;
+    }
+}
+
 /** The drop-in overloads' settings from OpenCV's arguments. */
 EssentialParams dropInParams(int method, double prob, double threshold, int maxIters)
 {
@@ -253,6 +293,74 @@ EssentialParams dropInParams(int method, double prob, double threshold, int maxI
     p.confidence = prob;
     p.threshold = method == LMEDS ? 1.0 : threshold;
     p.maxIters = maxIters;
+    applyUsacFlag(method, p);
+    return p;
+}
+
+/** The module's settings from a UsacParams (the mapping documented in essential.hpp). */
+EssentialParams usacParams(const UsacParams& usac)
+{
+    EssentialParams p;
+    switch (usac.score) {
+    case SCORE_METHOD_RANSAC:
+    case SCORE_METHOD_MSAC:
+    case SCORE_METHOD_MAGSAC:
+        p.method = RANSAC;
+        break;
+    case SCORE_METHOD_LMEDS:
+        p.method = LMEDS;
+        break;
+    default:
+        CV_Error(Error::StsBadArg,
+                 "UsacParams::score " + std::to_string(int(usac.score)) + " is not a ScoreMethod");
+    }
+    switch (usac.sampler) {
+    case SAMPLING_UNIFORM:
+    case SAMPLING_PROSAC:
+        p.sampler = usac.sampler;
+        break;
+    case SAMPLING_NAPSAC:
+        CV_Error(Error::StsNotImplemented,
+                 "UsacParams::sampler SAMPLING_NAPSAC is not supported: use SAMPLING_UNIFORM or "
+                 "SAMPLING_PROSAC");
+    case SAMPLING_PROGRESSIVE_NAPSAC:
+        CV_Error(Error::StsNotImplemented,
+                 "UsacParams::sampler SAMPLING_PROGRESSIVE_NAPSAC is not supported: use "
+                 "SAMPLING_UNIFORM or SAMPLING_PROSAC");
+    default:
+        CV_Error(Error::StsBadArg, "UsacParams::sampler " + std::to_string(int(usac.sampler)) +
+                                       " is not a SamplingMethod");
+    }
+    switch (usac.loMethod) {
+    case LOCAL_OPTIM_NULL:
+        p.loIterations = 0;
+        break;
+    case LOCAL_OPTIM_INNER_LO:
+    case LOCAL_OPTIM_INNER_AND_ITER_LO:
+    case LOCAL_OPTIM_GC:
+    case LOCAL_OPTIM_SIGMA:
+        if (usac.loIterations < 0)
+            CV_Error(Error::StsBadArg, "UsacParams::loIterations must be >= 0, got " +
+                                           std::to_string(usac.loIterations));
+        if (usac.loSampleSize < 0 || (usac.loSampleSize > 0 && usac.loSampleSize < 5))
+            CV_Error(Error::StsBadArg, "UsacParams::loSampleSize must be 0 (all inliers) or >= 5, "
+                                       "got " +
+                                           std::to_string(usac.loSampleSize));
+        p.loIterations = usac.loIterations;
+        p.loSampleSize = usac.loSampleSize;
+        break;
+    default:
+        CV_Error(Error::StsBadArg, "UsacParams::loMethod " + std::to_string(int(usac.loMethod)) +
+                                       " is not a LocalOptimMethod");
+    }
+    // isParallel and neighborsSearch are ignored (see essential.hpp).
+    checkConfidence(usac.confidence);
+    if (p.method != LMEDS) checkThreshold(usac.threshold);
+    checkMaxIters(usac.maxIterations);
+    p.confidence = usac.confidence;
+    p.threshold = p.method == LMEDS ? 1.0 : usac.threshold;
+    p.maxIters = usac.maxIterations;
+    p.seed = static_cast<uint64>(static_cast<unsigned>(usac.randomGeneratorState));
     return p;
 }
 
@@ -355,9 +463,7 @@ Mat findEssentialMatIter(InputArray points1, InputArray points2, InputArray came
                          OutputArray mask, const UsacParams& usac)
 {
     const int64 start = getTickCount();
-    EssentialParams params =
-        dropInParams(RANSAC, usac.confidence, usac.threshold, usac.maxIterations);
-    params.seed = static_cast<uint64>(static_cast<unsigned>(usac.randomGeneratorState));
+    const EssentialParams params = usacParams(usac);
     return estimateTwoCameras(points1, points2, cameraMatrix1, distCoeffs1, cameraMatrix2,
                               distCoeffs2, params, mask, start);
 }
@@ -386,6 +492,26 @@ Mat findEssentialMatIter(InputArray points1, InputArray points2, InputArray came
         CV_Error(Error::StsBadArg, "EssentialParams::preemptiveHypotheses must be >= 0");
     if (params.preemptiveBlockSize < 1)
         CV_Error(Error::StsBadArg, "EssentialParams::preemptiveBlockSize must be >= 1");
+    if (params.loIterations < 0)
+        CV_Error(Error::StsBadArg, "EssentialParams::loIterations must be >= 0, got " +
+                                       std::to_string(params.loIterations));
+    if (params.loSampleSize < 0 || (params.loSampleSize > 0 && params.loSampleSize < 5))
+        CV_Error(Error::StsBadArg,
+                 "EssentialParams::loSampleSize must be 0 (all inliers) or >= 5, got " +
+                     std::to_string(params.loSampleSize));
+    if (params.sampler == SAMPLING_NAPSAC || params.sampler == SAMPLING_PROGRESSIVE_NAPSAC)
+        CV_Error(Error::StsNotImplemented,
+                 std::string("EssentialParams::sampler ") +
+                     (params.sampler == SAMPLING_NAPSAC ? "SAMPLING_NAPSAC"
+                                                        : "SAMPLING_PROGRESSIVE_NAPSAC") +
+                     " is not supported: use SAMPLING_UNIFORM or SAMPLING_PROSAC");
+    if (params.sampler != SAMPLING_UNIFORM && params.sampler != SAMPLING_PROSAC)
+        CV_Error(Error::StsBadArg,
+                 "EssentialParams::sampler must be SAMPLING_UNIFORM or SAMPLING_PROSAC, got " +
+                     std::to_string(params.sampler));
+    if (params.sampler == SAMPLING_PROSAC && params.engine != ENGINE_ADAPTIVE)
+        CV_Error(Error::StsNotImplemented,
+                 "EssentialParams::sampler SAMPLING_PROSAC needs ENGINE_ADAPTIVE");
     checkConfidence(params.confidence);
     checkThreshold(params.threshold);
     checkMaxIters(params.maxIters);

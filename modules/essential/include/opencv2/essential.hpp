@@ -16,8 +16,9 @@ Fast, robust estimation of the essential matrix between two calibrated views, af
 Reitmayr and Drummond, "Improved RANSAC performance using simple, iterative minimal-set solvers":
 hypotheses come from a tiny Gauss-Newton or Levenberg-Marquardt optimiser on a minimal set of five
 correspondences in a 5-DOF parameterisation (rotation by the SO(3) exponential map, translation as a
-rotated unit vector), are scored by MSAC on the Sampson distance, and the winner is refined on all
-points by iteratively reweighted least squares.
+rotated unit vector), are verified by Wald's SPRT and scored by MSAC on the Sampson distance, each
+new best model is polished by a few iterations of iteratively reweighted least squares (IRLS) on its
+inliers (local optimisation), and the winner is refined on all points by IRLS.
 
 findEssentialMatIter() has every overload of `cv::findEssentialMat` (OpenCV 4.6) with the same
 arguments, defaults, return value and mask, so renaming a call site is enough to switch.
@@ -30,9 +31,63 @@ Differences from `cv::findEssentialMat` that a caller may notice:
   fraction s of outlier-free samples may draw maxIters / s samples (see EssentialParams::maxIters);
 - the returned E is refined on all points by IRLS (set EssentialParams::refine = false in the
   module's own overload to skip this), and the mask is that of the refined E;
-- the USAC method flags (`USAC_DEFAULT`, `USAC_MAGSAC`, ...) and the UsacParams overload currently
-run the same adaptive MSAC engine, honouring confidence, threshold, maxIterations and
-  randomGeneratorState; the other UsacParams fields are not used yet.
+- the USAC method flags and the UsacParams overload map onto the module's own engine (adaptive
+  MSAC with IRLS local optimisation, PROSAC, SPRT) as in the tables below, in the spirit of
+  OpenCV's usac::setParameters; OpenCV's graph-cut and sigma-consensus LO, MAGSAC++ scoring, NAPSAC
+  sampling and parallel RANSAC are not implemented. Unlike OpenCV 4.6, whose USAC flags ignore
+  `maxIters` (always 1000), the flags honour it.
+
+The `method` flags of the drop-in overloads. Every flag keeps `prob`, `threshold` and `maxIters`;
+"LO k" is EssentialParams::loIterations = k (IRLS on all the inliers of each new best model); SPRT
+verification (EssentialParams::sprt) is on for RANSAC and every USAC flag, as OpenCV's USAC
+verifies with SPRT too:
+
+| flag            | engine settings            | OpenCV 4.6 (usac::setParameters)             |
+|-----------------|----------------------------|----------------------------------------------|
+| `RANSAC`        | MSAC, uniform, LO 5, SPRT  | plain RANSAC                                 |
+| `LMEDS`         | LMedS (no LO, no SPRT)     | LMedS                                        |
+| `USAC_DEFAULT`  | MSAC, uniform, LO 5        | MSAC, inner + iterative LO                   |
+| `USAC_PARALLEL` | as USAC_DEFAULT (1 thread) | MSAC, inner LO, parallel                     |
+| `USAC_FAST`     | MSAC, uniform, LO 2        | MSAC, fewer LO iterations                    |
+| `USAC_ACCURATE` | MSAC, uniform, LO 10       | MSAC, graph-cut LO                           |
+| `USAC_PROSAC`   | MSAC, PROSAC, LO 5         | PROSAC (points sorted best first), inner LO  |
+| `USAC_MAGSAC`   | MSAC, uniform, LO 5        | MAGSAC++ score, sigma-consensus LO           |
+| `USAC_FM_8PTS`  | as USAC_DEFAULT            | 8-point fundamental-matrix solver            |
+
+Notes: USAC_PARALLEL runs on one thread and gives the same result as USAC_DEFAULT. USAC_MAGSAC
+scores by MSAC with the given threshold (MAGSAC++'s marginalisation over noise scales is not
+implemented). USAC_FM_8PTS makes OpenCV fit an unconstrained 3 x 3 matrix with its 8-point
+fundamental-matrix solver to the calibrated points; an essential matrix is asked for, so the module
+estimates one with its own solvers.
+
+The UsacParams overload reads every field of OpenCV 4.6's UsacParams:
+
+| field                  | meaning here                                                      |
+|------------------------|-------------------------------------------------------------------|
+| `confidence`           | as `prob`                                                         |
+| `threshold`            | as `threshold` (unused by SCORE_METHOD_LMEDS)                     |
+| `maxIterations`        | as `maxIters`                                                     |
+| `randomGeneratorState` | the seed, read as an unsigned 32-bit value                        |
+| `score`                | RANSAC, MSAC, MAGSAC: MSAC; LMEDS: the LMedS engine (1)           |
+| `sampler`              | UNIFORM; PROSAC (sorted points); NAPSAC, PROGRESSIVE_NAPSAC: (2)  |
+| `loMethod`             | LOCAL_OPTIM_NULL: no LO; every other method: IRLS LO (3)          |
+| `loIterations`         | IRLS iterations of each LO (0: no LO)                             |
+| `loSampleSize`         | LO on a random subset of this many inliers (0: all) (4)           |
+| `isParallel`           | ignored (5)                                                       |
+| `neighborsSearch`      | ignored (6)                                                       |
+
+(1) LMedS derives its threshold from the data and has no LO; SCORE_METHOD_MAGSAC scores by MSAC
+with `threshold` (MAGSAC++ is not implemented). (2) The NAPSAC samplers raise StsNotImplemented
+naming the option. (3) LOCAL_OPTIM_INNER_LO, LOCAL_OPTIM_INNER_AND_ITER_LO, LOCAL_OPTIM_GC and
+LOCAL_OPTIM_SIGMA all run the module's IRLS local optimisation with `loIterations` and
+`loSampleSize`. (4) 1 to 4 raise StsBadArg; OpenCV 4.6's default of 14 is used as given. (5) The
+search runs on one thread; the result is the same either way. (6) OpenCV uses the neighbourhood
+graph only in the NAPSAC samplers (which raise here) and in graph-cut LO (replaced here by IRLS LO),
+so it cannot change the result. Invalid values of score, sampler, loMethod, loIterations or
+loSampleSize raise StsBadArg naming the field.
+
+OpenCV 4.7 added `final_polisher` and `final_polisher_iterations` to UsacParams; 4.6 has neither,
+and the module always ends with its IRLS refinement (EssentialParams::refine).
 */
 
 namespace cv {
@@ -48,7 +103,8 @@ prob, threshold, maxIters, mask)`.
 single-channel or N x 1 two-channel Mat, CV_32F or CV_64F.
 @param points2 the N corresponding points of the second image, same layout.
 @param cameraMatrix 3 x 3 intrinsic matrix of both cameras (fx, fy non-zero).
-@param method `RANSAC` or `LMEDS` (the USAC flags are accepted, see the module description).
+@param method `RANSAC`, `LMEDS` or a USAC flag (`USAC_DEFAULT`, ..., `USAC_MAGSAC`: the settings
+each stands for are in the module description's table).
 @param prob confidence in (0, 1).
 @param threshold maximum Sampson distance, in pixels, of an inlier (RANSAC only); > 0.
 @param maxIters maximum number of RANSAC iterations in OpenCV's units (see
@@ -91,9 +147,12 @@ CV_EXPORTS Mat findEssentialMatIter(InputArray points1, InputArray points2,
 
 /** @overload UsacParams form.
 
-Honoured: `confidence`, `threshold`, `maxIterations`, `randomGeneratorState`. The sampler, score,
-local optimisation and neighbourhood fields do not change the engine yet (it is always uniform
-sampling with MSAC scoring and a final IRLS refinement).
+Every field of OpenCV 4.6's UsacParams is read, as the module description's table says: confidence,
+threshold, maxIterations, randomGeneratorState, score (MSAC or LMedS), sampler (uniform or PROSAC;
+the NAPSAC samplers raise StsNotImplemented naming the option), loMethod / loIterations /
+loSampleSize (IRLS local optimisation); isParallel and neighborsSearch cannot change the result and
+are ignored. Invalid values raise StsBadArg naming the field. As in OpenCV, the points are
+undistorted with each camera's own coefficients.
 */
 CV_EXPORTS Mat findEssentialMatIter(InputArray points1, InputArray points2,
                                     InputArray cameraMatrix1, InputArray cameraMatrix2,

@@ -62,6 +62,42 @@ Score scoreMsacRange(const Matx33d& E, const Problem& problem, int first, int la
         }
         s.cost += cost;
         s.inliers += inliers;
+        s.scored += end - begin;
+        if (s.cost >= bestCost) return s;
+    }
+    return s;
+}
+
+/** Block length of the SPRT scoring: the test usually rejects a bad hypothesis after 10 to 20
+points, so shorter blocks than kBlock waste less of the vectorised distance computation. */
+constexpr int kSprtBlock = 16;
+
+Score scoreMsacSprt(const Matx33d& E, const Problem& problem, double bestCost, const SprtTest& test,
+                    bool& rejected)
+{
+    const double t2 = problem.threshold * problem.threshold;
+    const int n = problem.size();
+    Score s;
+    s.cost = 0.0;
+    rejected = false;
+    double logLambda = 0.0;
+    double err[kSprtBlock];
+    for (int begin = 0; begin < n; begin += kSprtBlock) {
+        const int end = std::min(n, begin + kSprtBlock);
+        sampsonBlock(E, problem.x1.data(), problem.y1.data(), problem.x2.data(), problem.y2.data(),
+                     begin, end, err);
+        for (int i = 0; i < end - begin; ++i) {
+            const bool in = err[i] <= t2;
+            s.cost += in ? err[i] : t2;
+            s.inliers += in;
+            logLambda += in ? test.logIn : test.logOut;
+            if (logLambda > test.logA) {
+                s.scored = begin + i + 1;
+                rejected = true;
+                return s;
+            }
+        }
+        s.scored = end;
         if (s.cost >= bestCost) return s;
     }
     return s;

@@ -8,6 +8,7 @@
 #define OPENCV_ESSENTIAL_RANSAC_MSAC_SCORE_HPP
 
 #include "problem.hpp"
+#include "ransac/sprt.hpp"
 
 #include <opencv2/core.hpp>
 
@@ -19,6 +20,7 @@ struct Score
 {
     double cost = HUGE_VAL; //!< truncated sum of squared Sampson distances
     int inliers = 0; //!< points with squared Sampson distance at most threshold^2 (as OpenCV)
+    int scored = 0;  //!< points whose distance was computed (fewer than N after an early exit)
 };
 
 /** Scores E on all points. Gives up (returning a cost >= bestCost) as soon as the partial cost
@@ -29,6 +31,13 @@ Score scoreMsac(const Matx33d& E, const Problem& problem, double bestCost = HUGE
 with the same early exit at bestCost. */
 Score scoreMsacRange(const Matx33d& E, const Problem& problem, int begin, int end,
                      double bestCost = HUGE_VAL);
+
+/** MSAC scoring with Wald's SPRT (ransac/sprt.hpp): the points are checked in order and the
+log-likelihood ratio of `test` accumulated point by point; as soon as it exceeds test.logA the
+hypothesis is rejected (`rejected` set, the returned Score counting the points checked and the
+inliers among them). The MSAC early exit at bestCost applies as well (checked every 16 points). */
+Score scoreMsacSprt(const Matx33d& E, const Problem& problem, double bestCost, const SprtTest& test,
+                    bool& rejected);
 
 /** Squared Sampson distance of every point to E (for LMedS and masks). */
 void sampsonErrors(const Matx33d& E, const Problem& problem, double* errors);

@@ -6,6 +6,7 @@
 
 #include "opencv2/essential/solver.hpp"
 #include "problem.hpp"
+#include "ransac/prosac_sampler.hpp"
 #include "ransac/uniform_sampler.hpp"
 
 #include <vector>
@@ -22,6 +23,9 @@ struct SampleBuffer
     std::vector<int> indices;
     std::vector<Point2d> x1, x2;
     std::vector<Matx33d> solutions;
+    /** When set, samples come from this PROSAC sampler (points sorted best first) instead of being
+    uniform. Not owned. */
+    ProsacSampler* prosac = nullptr;
 
     explicit SampleBuffer(const EssentialSolver& solver)
         : sampleSize(solver.sampleSize()), indices(static_cast<size_t>(sampleSize)),
@@ -30,12 +34,16 @@ struct SampleBuffer
     {
     }
 
-    /** Draws a uniform sample and runs the solver on it; returns the number of solutions. A sample
-    with two coincident points in either view is degenerate (it constrains E less than its size
-    says, and all-identical input would otherwise "fit" anything): it is not solved. */
+    /** Draws a sample (uniform, or PROSAC's) and runs the solver on it; returns the number of
+    solutions. A sample with two coincident points in either view is degenerate (it constrains E
+    less than its size says, and all-identical input would otherwise "fit" anything): it is not
+    solved. */
     int drawAndSolve(const Problem& problem, EssentialSolver& solver, RNG& rng)
     {
-        drawUniformSample(rng, problem.size(), sampleSize, indices.data());
+        if (prosac)
+            prosac->draw(rng, indices.data());
+        else
+            drawUniformSample(rng, problem.size(), sampleSize, indices.data());
         for (int i = 0; i < sampleSize; ++i) {
             x1[i] = problem.p1[indices[i]];
             x2[i] = problem.p2[indices[i]];

@@ -2,8 +2,8 @@
 // See the LICENSE file at the top of the source tree.
 
 // The hypothesise-and-verify loops: adaptive MSAC and least median of squares (LMedS). Both draw
-// uniform samples, ask the solver for hypotheses and keep the best by their score; they know the
-// solver only through the EssentialSolver interface.
+// samples (uniform, or PROSAC's progressive ones), ask the solver for hypotheses and keep the best
+// by their score; they know the solver only through the EssentialSolver interface.
 
 #ifndef OPENCV_ESSENTIAL_RANSAC_SEARCH_HPP
 #define OPENCV_ESSENTIAL_RANSAC_SEARCH_HPP
@@ -26,6 +26,16 @@ struct SearchSettings
     kDefaultPreemptiveHypotheses without one) and the block size B. */
     int preemptiveHypotheses = 0;
     int preemptiveBlockSize = 100;
+    /** Adaptive MSAC: local optimisation of each new best model by this many IRLS iterations
+    (0: none) with Cauchy scale loScale (normalised units), on all its inliers (loSampleSize 0) or a
+    random subset of loSampleSize of them. */
+    int loIterations = 0;
+    int loSampleSize = 0;
+    double loScale = 0.0;
+    /** Adaptive MSAC and LMedS: PROSAC sampling (points sorted best first) instead of uniform. */
+    bool prosac = false;
+    /** Adaptive MSAC: verify hypotheses with Wald's SPRT. */
+    bool sprt = false;
 };
 
 struct SearchResult
@@ -36,15 +46,22 @@ struct SearchResult
     data-derived one for LMedS. */
     double threshold = 0.0;
     int inliers = 0;
-    int iterations = 0;          //!< samples drawn
-    int hypothesesGenerated = 0; //!< solver calls
-    int hypothesesConverged = 0; //!< matrices returned by the solver
-    int hypothesesScored = 0;    //!< matrices scored
+    int iterations = 0;             //!< samples drawn
+    int hypothesesGenerated = 0;    //!< solver calls
+    int hypothesesConverged = 0;    //!< matrices returned by the solver
+    int hypothesesScored = 0;       //!< matrices scored
+    int64 pointsScored = 0;         //!< Sampson distances computed while scoring hypotheses
+    int localOptimisations = 0;     //!< local optimisations run
+    int localOptimisationsKept = 0; //!< of which lowered the MSAC cost (the polished model kept)
+    int sprtRejections = 0;         //!< hypotheses rejected by the SPRT
 };
 
 /** Adaptive MSAC: stops when the samples drawn reach requiredIterations() for the best inlier ratio
 so far (with the solver's success rate), or sampleCap(maxIters, success rate). A result needs at
-least sampleSize inliers. */
+least sampleSize inliers. Options (SearchSettings): local optimisation of each new best model by
+IRLS on its inliers, kept when it lowers the MSAC cost; PROSAC sampling with PROSAC's stopping rule
+(ransac/prosac_sampler.hpp); SPRT verification (ransac/sprt.hpp), with the sample probability in
+the stopping rule lowered by the test's bound on false rejections. */
 SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rng,
                         const SearchSettings& settings);
 
@@ -61,6 +78,10 @@ and no M given, M is chosen at run time from the measured cost of generating a h
 scoring a point, so that generation and scoring fit the time left. */
 SearchResult searchPreemptive(const Problem& problem, EssentialSolver& solver, RNG& rng,
                               const SearchSettings& settings);
+
+/** The points of `problem` in a random order (for scoring on random subsets or in a random order).
+ */
+Problem shuffledCopy(const Problem& problem, RNG& rng);
 
 /** M of the preemptive search when neither M nor a deadline is given. */
 constexpr int kDefaultPreemptiveHypotheses = 500;

@@ -2,12 +2,14 @@
 // See the LICENSE file at the top of the source tree.
 
 #include "ransac/msac_score.hpp"
+#include "ransac/prosac_sampler.hpp"
 #include "ransac/sample_buffer.hpp"
 #include "ransac/search.hpp"
 #include "ransac/termination.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <vector>
 
 namespace cv {
@@ -27,6 +29,13 @@ SearchResult searchLmeds(const Problem& problem, EssentialSolver& solver, RNG& r
     const int samples = std::max(
         3, requiredIterations(settings.confidence, solver.hitProbability(assumedInlierRatio),
                               sampleCap(settings.maxIters, solver.successRate())));
+    // PROSAC: its growth schedule over the fixed number of samples (LMedS has no adaptive stopping
+    // rule, so PROSAC only changes the order in which the points are tried).
+    std::unique_ptr<ProsacSampler> prosac;
+    if (settings.prosac) {
+        prosac.reset(new ProsacSampler(n, buffer.sampleSize, samples));
+        buffer.prosac = prosac.get();
+    }
     std::vector<double> errors(static_cast<size_t>(n));
     double bestMedian = HUGE_VAL;
     for (; result.iterations < samples; ++result.iterations) {
@@ -36,6 +45,7 @@ SearchResult searchLmeds(const Problem& problem, EssentialSolver& solver, RNG& r
         result.hypothesesConverged += count;
         for (int h = 0; h < count; ++h) {
             ++result.hypothesesScored;
+            result.pointsScored += n;
             sampsonErrors(buffer.solutions[h], problem, errors.data());
             for (double& e : errors)
                 if (std::isnan(e)) e = HUGE_VAL;

@@ -2,13 +2,36 @@
 // See the LICENSE file at the top of the source tree.
 
 #include "ransac/msac_score.hpp"
+#include "ransac/prosac_sampler.hpp"
 #include "ransac/sample_buffer.hpp"
 #include "ransac/search.hpp"
+#include "ransac/sprt.hpp"
 #include "ransac/termination.hpp"
+#include "refine/irls_refinement.hpp"
+
+#include <memory>
+#include <utility>
+#include <vector>
 
 namespace cv {
 namespace essential {
 namespace ransac {
+
+namespace {
+
+/** The SPRT's t_M: the time to generate the models of one sample in units of the time to check one
+point. From essential_engines --part sprt at N = 1000 (SPRT on and off, the same samples): about
+4.5 us per solver call (gn+nister) and 1.4 ns per point check, a ratio near 3000. A depends on it
+only through K = t_M C / m_S + 1 and A = K + log A: doubling it moves the rejection by about one
+point check. */
+constexpr double kSprtHypothesisCost = 2500.0;
+
+/** The SPRT's delta before any bad model was rejected: a random point lies within the threshold of
+a wrong epipolar line with probability about 2 t / (image size), 0.002 to 0.005 for a 1 pixel
+threshold; starting higher only makes the first tests more lenient. */
+constexpr double kSprtInitialDelta = 0.01;
+
+} // namespace
 
 SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rng,
                         const SearchSettings& settings)
@@ -18,25 +41,135 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
     const int n = problem.size();
     SampleBuffer buffer(solver);
     if (n < buffer.sampleSize) return result;
+    const int cap = sampleCap(settings.maxIters, solver.successRate());
+
+    // PROSAC: the samples follow the growth schedule with T_N = the sample cap, so that the pool
+    // covers every point by the time the cap is reached.
+    std::unique_ptr<ProsacSampler> prosac;
+    std::unique_ptr<ProsacTermination> prosacStop;
+    if (settings.prosac) {
+        prosac.reset(new ProsacSampler(n, buffer.sampleSize, cap));
+        prosacStop.reset(new ProsacTermination(n, buffer.sampleSize));
+        buffer.prosac = prosac.get();
+    }
+    // SPRT checks the points in a random order (the data may be sorted, by PROSAC's quality or by
+    // anything else): it scores a shuffled copy. Samples and local optimisation use `problem`.
+    Problem shuffled;
+    const Problem* scoring = &problem;
+    if (settings.sprt) {
+        // Its own generator, seeded from the search's without advancing it: the samples are then
+        // the same with and without SPRT.
+        RNG shuffleRng(rng.state ^ 0x9e3779b97f4a7c15ULL);
+        shuffled = shuffledCopy(problem, shuffleRng);
+        scoring = &shuffled;
+    }
+    Sprt sprt(kSprtHypothesisCost, kSprtInitialDelta);
+    const bool lo = settings.loIterations > 0;
+    std::vector<uchar> mask;
+    std::vector<int> chosen;
+    if (lo || prosac) mask.resize(static_cast<size_t>(n));
+    if (lo) chosen.reserve(static_cast<size_t>(n));
 
     Score best;
-    const int cap = sampleCap(settings.maxIters, solver.successRate());
     int needed = cap;
+
+    // Local optimisation of the new best model: IRLS on its inliers (or a random subset of them),
+    // kept if its MSAC cost on all points is lower.
+    auto localOptimise = [&]() {
+        inlierMask(result.E, problem, problem.threshold, mask.data());
+        chosen.clear();
+        for (int i = 0; i < n; ++i)
+            if (mask[i]) chosen.push_back(i);
+        int k = static_cast<int>(chosen.size());
+        if (settings.loSampleSize > 0 && settings.loSampleSize < k) {
+            for (int i = 0; i < settings.loSampleSize; ++i)
+                std::swap(chosen[i], chosen[rng.uniform(i, k)]);
+            k = settings.loSampleSize;
+        }
+        if (k < 5) return; // IRLS fits 5 degrees of freedom
+        std::vector<Point2d> a(static_cast<size_t>(k)), b(static_cast<size_t>(k));
+        for (int i = 0; i < k; ++i) {
+            a[i] = problem.p1[chosen[i]];
+            b[i] = problem.p2[chosen[i]];
+        }
+        const Problem subset = makeProblem(std::move(a), std::move(b), problem.threshold);
+        refine::IrlsSettings irls;
+        irls.maxIterations = settings.loIterations;
+        ++result.localOptimisations;
+        const refine::IrlsResult polished =
+            refine::refineIrls(subset, result.E, settings.loScale, irls);
+        if (!polished.improved) return;
+        const Score s = scoreMsac(polished.E, *scoring, best.cost);
+        result.pointsScored += s.scored;
+        if (s.cost < best.cost && s.inliers >= buffer.sampleSize) {
+            best = s;
+            result.E = polished.E;
+            ++result.localOptimisationsKept;
+        }
+    };
+
+    // The stopping rule for the current best model: the standard one on all points and, with
+    // PROSAC, the least over the termination lengths n >= the current pool that pass PROSAC's
+    // non-randomness test (every sample so far was drawn from the best n points, and the pool is
+    // then held at the chosen length so that all further ones are too).
+    auto stopRule = [&](double inlierRatio) {
+        const double p = solver.hitProbability(inlierRatio);
+        return settings.sprt ? sprt.samplesNeeded(p, settings.confidence, cap)
+                             : requiredIterations(settings.confidence, p, cap);
+    };
+    auto samplesNeeded = [&]() {
+        int need = stopRule(double(best.inliers) / n);
+        if (!prosac || prosac->isUniform()) return need;
+        inlierMask(result.E, problem, problem.threshold, mask.data());
+        const int from = std::max(prosac->poolSize(), prosacStop->minLength());
+        int length = n, inliers = 0;
+        for (int k = 0; k < n - 1; ++k) {
+            inliers += mask[k];
+            const int len = k + 1;
+            if (len < from || !mask[k] || inliers < prosacStop->minInliers(len)) continue;
+            const int k_n = stopRule(double(inliers) / len);
+            if (k_n < need) {
+                need = k_n;
+                length = len;
+            }
+        }
+        prosac->setTerminationLength(length);
+        return need;
+    };
+
     while (result.iterations < needed) {
         if ((result.iterations & 7) == 7 && settings.deadline.passed()) break;
         ++result.iterations;
+        if (settings.sprt) sprt.sampleDrawn();
         const int count = buffer.drawAndSolve(problem, solver, rng);
         ++result.hypothesesGenerated;
         result.hypothesesConverged += count;
         for (int h = 0; h < count; ++h) {
             ++result.hypothesesScored;
-            const Score s = scoreMsac(buffer.solutions[h], problem, best.cost);
+            Score s;
+            if (sprt.active()) {
+                bool rejected = false;
+                s = scoreMsacSprt(buffer.solutions[h], *scoring, best.cost, sprt.test(), rejected);
+                result.pointsScored += s.scored;
+                if (rejected) {
+                    ++result.sprtRejections;
+                    if (sprt.rejected(s.inliers, s.scored) && result.found)
+                        needed = samplesNeeded();
+                    continue;
+                }
+            } else {
+                s = scoreMsac(buffer.solutions[h], *scoring, best.cost);
+                result.pointsScored += s.scored;
+            }
             if (s.cost < best.cost && s.inliers >= buffer.sampleSize) {
                 best = s;
                 result.E = buffer.solutions[h];
                 result.found = true;
-                needed = requiredIterations(settings.confidence,
-                                            solver.hitProbability(double(s.inliers) / n), cap);
+                if (lo) localOptimise();
+                if (settings.sprt)
+                    sprt.accepted(double(best.inliers) / n,
+                                  double(result.hypothesesConverged) / result.hypothesesGenerated);
+                needed = samplesNeeded();
             }
         }
     }

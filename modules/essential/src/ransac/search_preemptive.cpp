@@ -24,7 +24,11 @@ double msBetween(Clock::time_point a, Clock::time_point b)
     return std::chrono::duration<double, std::milli>(b - a).count();
 }
 
-/** The points in a random order, as a Problem, so that each block of B is a random subset. */
+/** Hypotheses drawn before the run-time cost measurement that sizes M under a deadline. */
+constexpr int kCalibrationHypotheses = 16;
+
+} // namespace
+
 Problem shuffledCopy(const Problem& problem, RNG& rng)
 {
     const int n = problem.size();
@@ -39,11 +43,6 @@ Problem shuffledCopy(const Problem& problem, RNG& rng)
     }
     return makeProblem(std::move(p1), std::move(p2), problem.threshold);
 }
-
-/** Hypotheses drawn before the run-time cost measurement that sizes M under a deadline. */
-constexpr int kCalibrationHypotheses = 16;
-
-} // namespace
 
 SearchResult searchPreemptive(const Problem& problem, EssentialSolver& solver, RNG& rng,
                               const SearchSettings& settings)
@@ -86,7 +85,7 @@ SearchResult searchPreemptive(const Problem& problem, EssentialSolver& solver, R
         const int probePoints = std::min(n, 4 * B);
         const Clock::time_point scoreStart = Clock::now();
         for (const Matx33d& E : hypotheses)
-            scoreMsacRange(E, data, 0, probePoints);
+            result.pointsScored += scoreMsacRange(E, data, 0, probePoints).scored;
         const double tPoint =
             msBetween(scoreStart, Clock::now()) / (double(hypotheses.size()) * probePoints);
         const double perHypothesis = tGen + std::min(2.0 * B, double(n)) * tPoint;
@@ -108,6 +107,7 @@ SearchResult searchPreemptive(const Problem& problem, EssentialSolver& solver, R
         const int end = std::min(n, begin + B);
         for (int h : alive)
             cost[h] += scoreMsacRange(hypotheses[h], data, begin, end).cost;
+        result.pointsScored += int64(end - begin) * int64(alive.size());
         const int blocksDone = end / B;
         const size_t keep =
             std::max<size_t>(1, static_cast<size_t>(std::ldexp(double(M), -blocksDone)));

@@ -16,7 +16,8 @@ Fast, robust estimation of the essential matrix between two calibrated views, af
 Reitmayr and Drummond, "Improved RANSAC performance using simple, iterative minimal-set solvers":
 hypotheses come from a tiny Gauss-Newton or Levenberg-Marquardt optimiser on a minimal set of five
 correspondences in a 5-DOF parameterisation (rotation by the SO(3) exponential map, translation as a
-rotated unit vector), are verified by Wald's SPRT and scored by MSAC on the Sampson distance, each
+rotated unit vector), or from a speed-tuned Nister five-point solver (the default draws from both
+in turn), are verified by Wald's SPRT and scored by MSAC on the Sampson distance, each
 new best model is polished by a few iterations of iteratively reweighted least squares (IRLS) on its
 inliers (local optimisation), and the winner is refined on all points by IRLS.
 

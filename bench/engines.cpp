@@ -140,8 +140,8 @@ int main(int argc, char** argv)
                     }
         }
         if (part == "all" || part == "overshoot") {
-            std::printf("\n### Time budgets, N = %d, inlier ratio %.2f, %d problems, solver gn\n\n",
-                        n, ratio, problems);
+            std::printf("\n### Time budgets, N = %d, inlier ratio %.2f, %d problems, solver %s\n\n",
+                        n, ratio, problems, cv::essential::EssentialParams().solver.c_str());
             std::printf("| engine | budget ms | reliability | median ms | p95 ms | p95 / budget |\n"
                         "|---|---|---|---|---|---|\n");
             for (int engine : {cv::essential::ENGINE_ADAPTIVE, cv::essential::ENGINE_PREEMPTIVE})

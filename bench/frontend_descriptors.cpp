@@ -13,6 +13,9 @@
 // (`k r00 .. r22 Cx Cy Cz`, world-to-camera rotation and camera centre), as ../shared/data/rail-a.
 
 #include "frontend/frontend.hpp"
+#include "frontend/sequence_io.hpp"
+
+#include "bench_common.hpp"
 
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
@@ -22,76 +25,18 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <map>
-#include <sstream>
 #include <string>
 #include <vector>
 
+using essential_bench::split;
+using essential_samples::framePath;
+using essential_samples::Pose;
+using essential_samples::readSequence;
+using essential_samples::sampsonPx;
+using essential_samples::trueFundamental;
+
 namespace {
-
-std::vector<std::string> split(const std::string& s)
-{
-    std::vector<std::string> out;
-    std::stringstream ss(s);
-    std::string item;
-    while (std::getline(ss, item, ','))
-        out.push_back(item);
-    return out;
-}
-
-struct Pose
-{
-    cv::Matx33d R;
-    cv::Vec3d C;
-};
-
-bool readSequence(const std::string& dir, cv::Matx33d& K, std::vector<Pose>& poses)
-{
-    std::ifstream kf(dir + "/camera.txt"), pf(dir + "/poses.txt");
-    if (!kf || !pf) return false;
-    for (int i = 0; i < 9; ++i)
-        kf >> K.val[i];
-    std::string line;
-    while (std::getline(pf, line)) {
-        std::istringstream ls(line);
-        int k;
-        Pose p;
-        if (!(ls >> k)) continue;
-        for (int i = 0; i < 9; ++i)
-            ls >> p.R.val[i];
-        for (int i = 0; i < 3; ++i)
-            ls >> p.C[i];
-        poses.push_back(p);
-    }
-    return static_cast<bool>(kf);
-}
-
-std::string framePath(const std::string& dir, int k)
-{
-    char name[32];
-    std::snprintf(name, sizeof(name), "/%03d.jpg", k);
-    return dir + name;
-}
-
-// Fundamental matrix of frames (i, j): x_j^T F x_i = 0, from E_ij = [t_ij]x R_ij.
-cv::Matx33d trueF(const cv::Matx33d& K, const Pose& a, const Pose& b)
-{
-    const cv::Matx33d R = b.R * a.R.t();
-    const cv::Vec3d t = -(b.R * (b.C - a.C));
-    const cv::Matx33d tx(0, -t[2], t[1], t[2], 0, -t[0], -t[1], t[0], 0);
-    const cv::Matx33d Kinv = K.inv();
-    return Kinv.t() * (tx * R) * Kinv;
-}
-
-double sampsonPx(const cv::Matx33d& F, const cv::Point2f& p1, const cv::Point2f& p2)
-{
-    const cv::Vec3d x1(p1.x, p1.y, 1.0), x2(p2.x, p2.y, 1.0);
-    const cv::Vec3d Fx1 = F * x1, Ftx2 = F.t() * x2;
-    const double r = x2.dot(Fx1);
-    const double d = Fx1[0] * Fx1[0] + Fx1[1] * Fx1[1] + Ftx2[0] * Ftx2[0] + Ftx2[1] * Ftx2[1];
-    return d > 0 ? std::abs(r) / std::sqrt(d) : HUGE_VAL;
-}
 
 double msSince(std::chrono::steady_clock::time_point start)
 {
@@ -201,7 +146,7 @@ int main(int argc, char** argv)
                     const auto matches = essential_samples::matchFeatures(f1, f2, params);
                     matchMs += msSince(t0);
                     ++matchings;
-                    const cv::Matx33d F = trueF(K, poses[i], poses[j]);
+                    const cv::Matx33d F = trueFundamental(K, poses[i], poses[j]);
                     int inliers = 0;
                     for (size_t m = 0; m < matches.points1.size(); ++m)
                         inliers += sampsonPx(F, matches.points1[m], matches.points2[m]) < threshold;

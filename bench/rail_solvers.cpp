@@ -14,6 +14,7 @@
 // (`k r00 .. r22 Cx Cy Cz`, world-to-camera rotation and camera centre), as ../shared/data/rail-a.
 
 #include "frontend/frontend.hpp"
+#include "frontend/sequence_io.hpp"
 
 #include "bench_common.hpp"
 #include <opencv2/essential.hpp>
@@ -24,49 +25,16 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <map>
-#include <sstream>
 #include <string>
 #include <vector>
 
 using namespace essential_bench;
+using essential_samples::framePath;
+using essential_samples::Pose;
+using essential_samples::readSequence;
 
 namespace {
-
-struct Pose
-{
-    cv::Matx33d R;
-    cv::Vec3d C;
-};
-
-bool readSequence(const std::string& dir, cv::Matx33d& K, std::vector<Pose>& poses)
-{
-    std::ifstream kf(dir + "/camera.txt"), pf(dir + "/poses.txt");
-    if (!kf || !pf) return false;
-    for (int i = 0; i < 9; ++i)
-        kf >> K.val[i];
-    std::string line;
-    while (std::getline(pf, line)) {
-        std::istringstream ls(line);
-        int k;
-        Pose p;
-        if (!(ls >> k)) continue;
-        for (int i = 0; i < 9; ++i)
-            ls >> p.R.val[i];
-        for (int i = 0; i < 3; ++i)
-            ls >> p.C[i];
-        poses.push_back(p);
-    }
-    return kf.good() || kf.eof();
-}
-
-std::string framePath(const std::string& dir, int k)
-{
-    char name[32];
-    std::snprintf(name, sizeof(name), "/%03d.jpg", k);
-    return dir + name;
-}
 
 double angleDeg(const cv::Vec3d& a, const cv::Vec3d& b)
 {
@@ -128,7 +96,8 @@ int main(int argc, char** argv)
         const std::string dir = data + "/" + seq;
         cv::Matx33d K;
         std::vector<Pose> poses;
-        if (!readSequence(dir, K, poses) || poses.size() < 2) {
+        // A camera.txt that ends early is accepted here (as this program always did).
+        if (!readSequence(dir, K, poses, /*acceptShortCamera=*/true) || poses.size() < 2) {
             std::fprintf(stderr, "cannot read %s/{camera,poses}.txt\n", dir.c_str());
             return 1;
         }
@@ -156,7 +125,7 @@ int main(int argc, char** argv)
                 const int j = i + offset;
                 if (j >= frames || i < 0) continue;
                 const auto matches = essential_samples::matchFeatures(featuresOf(i), featuresOf(j));
-                const cv::Vec3d tTrue = -(poses[j].R * (poses[j].C - poses[i].C));
+                const cv::Vec3d tTrue = essential_samples::relativeTranslation(poses[i], poses[j]);
                 for (const std::string& solver : solvers) {
                     for (int r = 0; r < repeats; ++r) {
                         cv::essential::EssentialParams params;

@@ -6,6 +6,7 @@
 // matches also go through cv::findEssentialMat + cv::recoverPose for comparison. Prints text or one
 // JSON object (--json), and optionally draws the matches and epipolar lines (--draw).
 
+#include "cli_common.hpp"
 #include "frontend/frontend.hpp"
 
 #include <opencv2/calib3d.hpp>
@@ -17,7 +18,6 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
-#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -31,6 +31,18 @@
 #include <vector>
 
 namespace {
+
+using essential_samples::directionAngleDeg;
+using essential_samples::elapsedMs;
+using essential_samples::fail;
+using essential_samples::isOption;
+using essential_samples::optionValue;
+using essential_samples::parseDouble;
+using essential_samples::parseInt;
+using essential_samples::parseSeed;
+using essential_samples::readNumberRows;
+using essential_samples::rotationAngleDeg;
+using essential_samples::split;
 
 const char* const kUsage =
     "usage: essential_pair IMG1 IMG2 (--camera fx,fy,cx,cy | --camera-file F)\n"
@@ -60,45 +72,6 @@ const char* const kUsage =
     "                        both images in other colours\n"
     "\n"
     "exit status: 0 pose found, 1 input error, 2 usage error, 3 no essential matrix found\n";
-
-// A usage or input error: main() prints its message as one line and exits with `code`.
-struct Failure
-{
-    std::string message;
-    int code;
-};
-
-[[noreturn]] void fail(const std::string& message, int code = 1)
-{
-    throw Failure{message, code};
-}
-
-double elapsedMs(std::chrono::steady_clock::time_point start)
-{
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-        .count();
-}
-
-bool parseDouble(const std::string& text, double& value)
-{
-    if (text.empty()) return false;
-    const char* begin = text.c_str();
-    char* end = nullptr;
-    errno = 0;
-    value = std::strtod(begin, &end);
-    return errno == 0 && end != begin && *end == '\0' && std::isfinite(value);
-}
-
-std::vector<std::string> split(const std::string& text, char separator)
-{
-    std::vector<std::string> parts;
-    std::string part;
-    std::istringstream stream(text);
-    while (std::getline(stream, part, separator))
-        parts.push_back(part);
-    if (!text.empty() && text.back() == separator) parts.emplace_back();
-    return parts;
-}
 
 cv::Matx33d cameraFromValues(double fx, double fy, double cx, double cy)
 {
@@ -137,22 +110,8 @@ cv::Matx33d readCameraFile(const std::string& path, cv::Size& imageSize)
     std::ifstream file(path);
     if (!file) fail("cannot open camera file '" + path + "'");
 
-    std::vector<std::vector<double>> rows;
-    std::string line;
-    while (std::getline(file, line)) {
-        const size_t first = line.find_first_not_of(" \t\r");
-        if (first == std::string::npos || line[first] == '#') continue;
-        std::istringstream stream(line);
-        std::vector<double> row;
-        std::string token;
-        while (stream >> token) {
-            double value;
-            if (!parseDouble(token, value))
-                fail("malformed camera file '" + path + "': '" + token + "' is not a number");
-            row.push_back(value);
-        }
-        rows.push_back(row);
-    }
+    const std::vector<std::vector<double>> rows =
+        readNumberRows(file, "malformed camera file '" + path + "'");
 
     cv::Matx33d K;
     imageSize = cv::Size();
@@ -219,20 +178,11 @@ Options parseOptions(int argc, char** argv)
             options.json = true;
             continue;
         }
-        if (arg.rfind("--", 0) != 0 || arg.size() == 2) {
+        if (!isOption(arg)) {
             positional.push_back(arg);
             continue;
         }
-        std::string value;
-        const size_t equals = arg.find('=');
-        if (equals != std::string::npos) {
-            value = arg.substr(equals + 1);
-            arg = arg.substr(0, equals);
-        } else if (i + 1 < argc) {
-            value = argv[++i];
-        } else {
-            fail("option " + arg + " needs a value (see --help)", 2);
-        }
+        const std::string value = optionValue(arg, i, argc, argv);
 
         if (arg == "--camera") {
             options.camera = value;
@@ -244,20 +194,14 @@ Options parseOptions(int argc, char** argv)
             if (!parseDouble(value, options.threshold) || !(options.threshold > 0.0))
                 fail("--threshold must be a positive number of pixels, not '" + value + "'", 2);
         } else if (arg == "--seed") {
-            char* end = nullptr;
-            errno = 0;
-            const unsigned long long seed = std::strtoull(value.c_str(), &end, 0);
-            if (value.empty() || value[0] == '-' || errno != 0 || *end != '\0')
+            if (!parseSeed(value, options.seed))
                 fail("--seed must be a non-negative integer, not '" + value + "'", 2);
-            options.seed = static_cast<std::uint64_t>(seed);
         } else if (arg == "--keep") {
             if (!parseDouble(value, options.keep) || !(options.keep > 0.0 && options.keep <= 1.0))
                 fail("--keep must be a fraction in (0, 1], not '" + value + "'", 2);
         } else if (arg == "--max-iters") {
-            char* end = nullptr;
-            errno = 0;
-            const long iters = std::strtol(value.c_str(), &end, 10);
-            if (value.empty() || errno != 0 || *end != '\0' || iters < 1 || iters > 100000000)
+            long long iters;
+            if (!parseInt(value, iters) || iters < 1 || iters > 100000000)
                 fail("--max-iters must be a positive integer, not '" + value + "'", 2);
             options.maxIters = static_cast<int>(iters);
             options.maxItersGiven = true;
@@ -309,22 +253,6 @@ std::string formatMatrix(const cv::Mat& m)
         text += r + 1 == m.rows ? "]\n" : ";\n";
     }
     return text;
-}
-
-// Angle in degrees of the rotation Ra^T Rb.
-double rotationAngleDeg(const cv::Matx33d& Ra, const cv::Matx33d& Rb)
-{
-    const cv::Matx33d D = Ra.t() * Rb;
-    const double c = std::max(-1.0, std::min(1.0, (cv::trace(D) - 1.0) / 2.0));
-    return std::acos(c) * 180.0 / CV_PI;
-}
-
-double directionAngleDeg(const cv::Vec3d& a, const cv::Vec3d& b)
-{
-    const double na = cv::norm(a), nb = cv::norm(b);
-    if (na == 0.0 || nb == 0.0) return 0.0;
-    const double c = std::max(-1.0, std::min(1.0, a.dot(b) / (na * nb)));
-    return std::acos(c) * 180.0 / CV_PI;
 }
 
 double percent(int part, int whole)
@@ -530,7 +458,8 @@ int run(int argc, char** argv)
     }
     const bool compared = found && report.poseRecovered && cvFound;
     const double rotationDiff = compared ? rotationAngleDeg(report.R, cv::Matx33d(cvR)) : 0.0;
-    const double translationDiff = compared ? directionAngleDeg(report.t, cv::Vec3d(cvT)) : 0.0;
+    const double translationDiff =
+        compared ? directionAngleDeg(report.t, cv::Vec3d(cvT), 0.0) : 0.0;
 
     if (!options.draw.empty())
         drawResult(options.draw, image1, image2, matches, mask, K, report.E, found);
@@ -685,16 +614,5 @@ int run(int argc, char** argv)
 
 int main(int argc, char** argv)
 {
-    try {
-        return run(argc, argv);
-    } catch (const Failure& failure) {
-        std::cerr << "essential_pair: " << failure.message << "\n";
-        return failure.code;
-    } catch (const cv::Exception& e) {
-        std::cerr << "essential_pair: " << e.err << " (in " << e.func << ")\n";
-        return 1;
-    } catch (const std::exception& e) {
-        std::cerr << "essential_pair: " << e.what() << "\n";
-        return 1;
-    }
+    return essential_samples::runCli("essential_pair", run, argc, argv);
 }

@@ -7,7 +7,9 @@
 // truth poses a pair is correct when the estimated translation direction is within a threshold of
 // the true one. Writes one CSV row per (pair, solver, budget) and a summary table on stdout.
 
+#include "cli_common.hpp"
 #include "frontend/frontend.hpp"
+#include "frontend/sequence_io.hpp"
 
 #include <opencv2/calib3d.hpp>
 #include <opencv2/core.hpp>
@@ -15,7 +17,6 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include <algorithm>
-#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -31,6 +32,20 @@
 #include <vector>
 
 namespace {
+
+using essential_samples::directionAngleDeg;
+using essential_samples::elapsedMs;
+using essential_samples::fail;
+using essential_samples::isOption;
+using essential_samples::optionValue;
+using essential_samples::parseDouble;
+using essential_samples::parseInt;
+using essential_samples::parseSeed;
+using essential_samples::Pose;
+using essential_samples::readNumberRows;
+using essential_samples::rotationAngleDeg;
+using essential_samples::sampsonPx;
+using essential_samples::split;
 
 const char* const kUsage =
     "usage: essential_sequence DIR [--offsets 1..60 | --offsets 1,5,10] [--solvers gn,nister,...]\n"
@@ -61,53 +76,6 @@ const char* const kUsage =
     "  --seed S              seed of the estimator (default: the module's)\n"
     "\n"
     "exit status: 0 done, 1 input error, 2 usage error\n";
-
-struct Failure
-{
-    std::string message;
-    int code;
-};
-
-[[noreturn]] void fail(const std::string& message, int code = 1)
-{
-    throw Failure{message, code};
-}
-
-double elapsedMs(std::chrono::steady_clock::time_point start)
-{
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-        .count();
-}
-
-bool parseDouble(const std::string& text, double& value)
-{
-    if (text.empty()) return false;
-    const char* begin = text.c_str();
-    char* end = nullptr;
-    errno = 0;
-    value = std::strtod(begin, &end);
-    return errno == 0 && end != begin && *end == '\0' && std::isfinite(value);
-}
-
-bool parseInt(const std::string& text, long long& value)
-{
-    if (text.empty()) return false;
-    char* end = nullptr;
-    errno = 0;
-    value = std::strtoll(text.c_str(), &end, 10);
-    return errno == 0 && *end == '\0';
-}
-
-std::vector<std::string> split(const std::string& text, char separator)
-{
-    std::vector<std::string> parts;
-    std::string part;
-    std::istringstream stream(text);
-    while (std::getline(stream, part, separator))
-        parts.push_back(part);
-    if (!text.empty() && text.back() == separator) parts.emplace_back();
-    return parts;
-}
 
 // "1..60", "1,5,10", "1..5,10": sorted, without repeats; all >= 1.
 std::vector<int> parseOffsets(const std::string& text)
@@ -163,20 +131,11 @@ Options parseOptions(int argc, char** argv)
             options.opencv = true;
             continue;
         }
-        if (arg.rfind("--", 0) != 0 || arg.size() == 2) {
+        if (!isOption(arg)) {
             positional.push_back(arg);
             continue;
         }
-        std::string value;
-        const size_t equals = arg.find('=');
-        if (equals != std::string::npos) {
-            value = arg.substr(equals + 1);
-            arg = arg.substr(0, equals);
-        } else if (i + 1 < argc) {
-            value = argv[++i];
-        } else {
-            fail("option " + arg + " needs a value (see --help)", 2);
-        }
+        const std::string value = optionValue(arg, i, argc, argv);
 
         long long integer = 0;
         if (arg == "--offsets") {
@@ -218,12 +177,8 @@ Options parseOptions(int argc, char** argv)
                 fail("--max-iters must be a positive integer, not '" + value + "'", 2);
             options.maxIters = static_cast<int>(integer);
         } else if (arg == "--seed") {
-            char* end = nullptr;
-            errno = 0;
-            const unsigned long long seed = std::strtoull(value.c_str(), &end, 0);
-            if (value.empty() || value[0] == '-' || errno != 0 || *end != '\0')
+            if (!parseSeed(value, options.seed))
                 fail("--seed must be a non-negative integer, not '" + value + "'", 2);
-            options.seed = seed;
         } else {
             fail("unknown option '" + arg + "' (see --help)", 2);
         }
@@ -241,23 +196,7 @@ std::vector<std::vector<double>> readNumberLines(const std::string& path, const 
 {
     std::ifstream file(path);
     if (!file) fail("missing " + what + ": cannot open '" + path + "'");
-    std::vector<std::vector<double>> rows;
-    std::string line;
-    while (std::getline(file, line)) {
-        const size_t first = line.find_first_not_of(" \t\r");
-        if (first == std::string::npos || line[first] == '#') continue;
-        std::istringstream stream(line);
-        std::vector<double> row;
-        std::string token;
-        while (stream >> token) {
-            double value;
-            if (!parseDouble(token, value))
-                fail("malformed " + what + " '" + path + "': '" + token + "' is not a number");
-            row.push_back(value);
-        }
-        rows.push_back(row);
-    }
-    return rows;
+    return readNumberRows(file, "malformed " + what + " '" + path + "'");
 }
 
 cv::Matx33d readCamera(const std::string& path)
@@ -275,12 +214,6 @@ cv::Matx33d readCamera(const std::string& path)
         fail("malformed camera '" + path + "': fx, fy must be positive and the last row 0 0 1");
     return K;
 }
-
-struct Pose
-{
-    cv::Matx33d R; // world to camera
-    cv::Vec3d C;   // camera centre in the world
-};
 
 std::map<int, Pose> readPoses(const std::string& path)
 {
@@ -317,29 +250,6 @@ std::map<int, std::string> listFrames(const std::string& dir)
         frames[std::stoi(stem)] = file;
     }
     return frames;
-}
-
-double rotationAngleDeg(const cv::Matx33d& Ra, const cv::Matx33d& Rb)
-{
-    const cv::Matx33d D = Ra.t() * Rb;
-    const double c = std::max(-1.0, std::min(1.0, (cv::trace(D) - 1.0) / 2.0));
-    return std::acos(c) * 180.0 / CV_PI;
-}
-
-double directionAngleDeg(const cv::Vec3d& a, const cv::Vec3d& b)
-{
-    const double na = cv::norm(a), nb = cv::norm(b);
-    if (na == 0.0 || nb == 0.0) return 180.0;
-    const double c = std::max(-1.0, std::min(1.0, a.dot(b) / (na * nb)));
-    return std::acos(c) * 180.0 / CV_PI;
-}
-
-double sampsonPx(const cv::Matx33d& F, const cv::Point2f& p1, const cv::Point2f& p2)
-{
-    const cv::Vec3d x1(p1.x, p1.y, 1.0), x2(p2.x, p2.y, 1.0);
-    const cv::Vec3d Fx1 = F * x1, Ftx2 = F.t() * x2;
-    const double d = Fx1[0] * Fx1[0] + Fx1[1] * Fx1[1] + Ftx2[0] * Ftx2[0] + Ftx2[1] * Ftx2[1];
-    return d > 0 ? std::abs(x2.dot(Fx1)) / std::sqrt(d) : HUGE_VAL;
 }
 
 std::string budgetLabel(double budget)
@@ -483,12 +393,10 @@ int run(int argc, char** argv)
         if (truth) {
             const Pose& a = poses.at(i);
             const Pose& b = poses.at(j);
-            Rtrue = b.R * a.R.t();
-            tTrue = -(b.R * (b.C - a.C));
-            const cv::Matx33d tx(0, -tTrue[2], tTrue[1], tTrue[2], 0, -tTrue[0], -tTrue[1],
-                                 tTrue[0], 0);
+            Rtrue = essential_samples::relativeRotation(a, b);
+            tTrue = essential_samples::relativeTranslation(a, b);
             const cv::Matx33d Kinv = K.inv();
-            const cv::Matx33d F = Kinv.t() * tx * Rtrue * Kinv;
+            const cv::Matx33d F = Kinv.t() * essential_samples::crossMatrix(tTrue) * Rtrue * Kinv;
             int good = 0;
             for (int m = 0; m < n; ++m) {
                 if (sampsonPx(F, matches.points1[m], matches.points2[m]) >= options.threshold)
@@ -521,7 +429,7 @@ int run(int argc, char** argv)
                     cv::recoverPose(E, matches.points1, matches.points2, K, R, t, mask);
                     row.posed = true;
                     if (truth) {
-                        row.tErr = directionAngleDeg(cv::Vec3d(t), tTrue);
+                        row.tErr = directionAngleDeg(cv::Vec3d(t), tTrue, 180.0);
                         row.rErr = rotationAngleDeg(cv::Matx33d(R), Rtrue);
                     }
                 }
@@ -546,7 +454,7 @@ int run(int argc, char** argv)
                 row.inliers = report.inliers;
                 row.posed = !E.empty() && report.success && report.poseRecovered;
                 if (row.posed && truth) {
-                    row.tErr = directionAngleDeg(report.t, tTrue);
+                    row.tErr = directionAngleDeg(report.t, tTrue, 180.0);
                     row.rErr = rotationAngleDeg(report.R, Rtrue);
                 }
             }
@@ -639,16 +547,5 @@ int run(int argc, char** argv)
 
 int main(int argc, char** argv)
 {
-    try {
-        return run(argc, argv);
-    } catch (const Failure& failure) {
-        std::cerr << "essential_sequence: " << failure.message << "\n";
-        return failure.code;
-    } catch (const cv::Exception& e) {
-        std::cerr << "essential_sequence: " << e.err << " (in " << e.func << ")\n";
-        return 1;
-    } catch (const std::exception& e) {
-        std::cerr << "essential_sequence: " << e.what() << "\n";
-        return 1;
-    }
+    return essential_samples::runCli("essential_sequence", run, argc, argv);
 }

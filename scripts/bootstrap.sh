@@ -4,7 +4,8 @@
 # Licensed under the Apache License, Version 2.0.
 set -euo pipefail
 
-packages=(cmake g++ make python3 libopencv-dev libeigen3-dev libgtest-dev libbenchmark-dev nlohmann-json3-dev)
+packages=(cmake g++ make python3 libopencv-dev libeigen3-dev libgtest-dev libbenchmark-dev nlohmann-json3-dev
+    python3-matplotlib)
 
 missing=()
 for pkg in "${packages[@]}"; do

@@ -25,6 +25,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+from matplotlib.ticker import FixedLocator, NullFormatter, ScalarFormatter  # noqa: E402
 
 MIN_MOTION = 10.0  # px: the paper's left panels aggregate the pairs with at least this motion
 BIN_EDGES = [0, 5, 10, 20, 40, 80, 160, math.inf]  # px of average motion
@@ -41,6 +42,14 @@ STYLE = {
     "opencv": dict(color="grey", linestyle="none", marker="D", label="cv::findEssentialMat"),
 }
 INLIER_COLOR = (0.0, 0.56, 0.56)
+
+
+def plain_log_axis(ax, ticks):
+    """Log-scale x axis labelled with plain numbers (1, 2, 5, 10, ...) instead of powers of ten."""
+    ax.set_xscale("log")
+    ax.xaxis.set_major_locator(FixedLocator(ticks))
+    ax.xaxis.set_major_formatter(ScalarFormatter())
+    ax.xaxis.set_minor_formatter(NullFormatter())
 
 
 def read_rows(path):
@@ -63,6 +72,65 @@ def bin_label(k):
 
 def ordered(values, order):
     return sorted(set(values), key=lambda v: (order.index(v) if v in order else len(order), v))
+
+
+def write_markdown(path, time_table, motion_table, sequences, variants, solvers, budgets):
+    """The tables behind the figures, as Markdown (docs/experiments/rail.md quotes them)."""
+    fast = 10.0 if 10.0 in budgets else min(budgets)
+    lines = []
+    for s in sequences:
+        for v in variants:
+            sel = [t for t in time_table if t["sequence"] == s and t["variant"] == v]
+            if not sel:
+                continue
+            rate = statistics.mean(float(t["mean_true_inlier_rate"]) for t in sel)
+            lines.append(f"**{s}, {v}**: reliability over the {sel[0]['pairs']} pairs with >= "
+                         f"{MIN_MOTION:g} px of motion (mean inlier rate {rate:.2f}); in brackets "
+                         "the mean CPU ms per call\n")
+            lines.append("| solver | " + " | ".join(f"{b:g} ms" for b in budgets) + " |")
+            lines.append("|---|" + "---|" * len(budgets))
+            for so in solvers:
+                cells = []
+                for b in ([0.0] if so == "opencv" else budgets):
+                    t = [t for t in sel if t["solver"] == so and float(t["budget_ms"]) == b]
+                    cells.append(f"{float(t[0]['reliability']):.3f} ({float(t[0]['mean_cpu_ms']):.1f})"
+                                 if t else "-")
+                if so == "opencv":
+                    cells = [f"no budget: {cells[0]}"] + [""] * (len(budgets) - 1)
+                lines.append(f"| {so} | " + " | ".join(cells) + " |")
+            lines.append("")
+    for s in sequences:
+        for v in variants:
+            sel = [t for t in motion_table if t["sequence"] == s and t["variant"] == v]
+            if not sel:
+                continue
+            bins = sorted({t["motion_bin_px"] for t in sel},
+                          key=lambda b: float(b.split("-")[0].replace(">= ", "")))
+            lines.append(f"**{s}, {v}**: reliability by average pixel motion (pairs per bin in "
+                         "the header; last row: mean inlier rate of the matches)\n")
+            head = []
+            for b in bins:
+                n = max(t["pairs"] for t in sel if t["motion_bin_px"] == b)
+                head.append(f"{b} px ({n})")
+            lines.append("| solver | budget | " + " | ".join(head) + " |")
+            lines.append("|---|---|" + "---|" * len(bins))
+            for so in solvers:
+                for b in ([0.0] if so == "opencv" else [max(budgets), fast]):
+                    row = []
+                    for bi in bins:
+                        t = [t for t in sel if t["solver"] == so and float(t["budget_ms"]) == b
+                             and t["motion_bin_px"] == bi]
+                        row.append(f"{float(t[0]['reliability']):.2f}" if t else "-")
+                    label = "none" if so == "opencv" else f"{b:g} ms"
+                    lines.append(f"| {so} | {label} | " + " | ".join(row) + " |")
+            rates = []
+            for bi in bins:
+                t = [t for t in sel if t["motion_bin_px"] == bi]
+                rates.append(f"{float(t[0]['mean_true_inlier_rate']):.2f}")
+            lines.append("| inlier rate | | " + " | ".join(rates) + " |")
+            lines.append("")
+    with open(path, "w") as f:
+        f.write("\n".join(lines))
 
 
 def main():
@@ -152,6 +220,9 @@ def main():
         w.writeheader()
         w.writerows(motion_table)
 
+    write_markdown(os.path.join(args.results, "rail_tables.md"), time_table, motion_table,
+                   sequences, variants, solvers, budgets)
+
     # Figures: one per variant, the paper's layout.
     slow = max(budgets)
     fast = 10.0 if 10.0 in budgets else min(budgets)
@@ -170,14 +241,14 @@ def main():
             sel = [t for t in time_table if t["sequence"] == s and t["variant"] == v]
             rate = statistics.mean(float(t["mean_true_inlier_rate"]) for t in sel) if sel else 0
             npairs = max((t["pairs"] for t in sel), default=0)
-            ax.set_xscale("log")
+            plain_log_axis(ax, [1, 2, 5, 10, 20, 50, 100, 200, 500, 1000])
             ax.set_xlabel("CPU time per frame pair (ms, mean over pairs; log scale)")
             ax.set_ylabel("reliability (t within 10 deg)")
             ax.set_title(f"{s}: {npairs} pairs with >= {MIN_MOTION:g} px motion, "
                          f"inlier rate {rate:.2f}", fontsize=10)
             ax.set_ylim(-0.02, 1.02)
             ax.grid(True, which="both", alpha=0.3)
-            if row == 0:
+            if row == 0 and ax.get_legend_handles_labels()[0]:
                 ax.legend(fontsize=8, loc="lower right")
 
             for col, budget in ((1, slow), (2, fast)):
@@ -194,13 +265,13 @@ def main():
                                 [float(t["reliability"]) for t in pts],
                                 **STYLE.get(so, {"label": so}))
                     inl = pts
-                ax.set_xscale("log")
+                plain_log_axis(ax, [1, 2, 5, 10, 20, 50, 100, 200])
                 ax.set_xlabel("average pixel motion of the pair (px, bin mean; log scale)")
                 ax.set_ylabel("reliability (t within 10 deg)")
                 ax.set_ylim(-0.02, 1.02)
                 ax.grid(True, which="both", alpha=0.3)
                 what = "OpenCV: no budget" if col == 1 else "OpenCV not shown"
-                ax.set_title(f"{s}: {budget:g} ms per pair ({what})", fontsize=10)
+                ax.set_title(f"{s}: budget {budget:g} ms per pair ({what})", fontsize=10)
                 if inl:
                     ax2 = ax.twinx()
                     ax2.plot([float(t["mean_motion_px"]) for t in inl],
@@ -216,7 +287,7 @@ def main():
         fig.suptitle(title, fontsize=12)
         fig.tight_layout(rect=(0, 0, 1, 0.97))
         out = os.path.join(args.figures, f"rail_{v}.png")
-        fig.savefig(out, dpi=72)
+        fig.savefig(out, dpi=80)
         plt.close(fig)
         print("plot_rail.py: wrote " + out)
 

@@ -34,7 +34,7 @@ while [[ $# -gt 0 ]]; do
     --out) out=$2; shift 2 ;;
     --bin) bin=$2; shift 2 ;;
     --cache) cache=$2; shift 2 ;;
-    -h | --help) sed -n '2,20p' "${BASH_SOURCE[0]}"; exit 0 ;;
+    -h | --help) sed -n '2,19p' "${BASH_SOURCE[0]}"; exit 0 ;;
     *) echo "experiment_rail.sh: unknown argument '$1' (see --help)" >&2; exit 2 ;;
     esac
 done

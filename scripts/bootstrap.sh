@@ -4,7 +4,7 @@
 # Licensed under the Apache License, Version 2.0.
 set -euo pipefail
 
-packages=(cmake g++ make python3 python3-matplotlib libopencv-dev libeigen3-dev libgtest-dev libbenchmark-dev nlohmann-json3-dev)
+packages=(cmake g++ make python3 libopencv-dev libeigen3-dev libgtest-dev libbenchmark-dev nlohmann-json3-dev)
 
 missing=()
 for pkg in "${packages[@]}"; do

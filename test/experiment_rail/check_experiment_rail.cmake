@@ -1,0 +1,66 @@
+# Runs scripts/experiment_rail.sh --quick into OUT with PROGRAM and checks what it wrote: the
+# per-estimate CSV (gzip) with its columns and one row per (variant, solver, budget) -- 2 variants x
+# (5 solvers x 3 budgets + OpenCV) = 32 -- every solver correct at 100 ms on the best 20% (about
+# 96% inliers on this pair), the two summary CSVs with their columns, and the two figures.
+# Licensed under the Apache License, Version 2.0.
+file(REMOVE_RECURSE "${OUT}")
+execute_process(COMMAND bash ${SCRIPT} --quick --bin ${PROGRAM} --out ${OUT} --cache ${OUT}/cache
+                RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT code EQUAL 0)
+  message(FATAL_ERROR "experiment_rail.sh --quick exited with ${code}: ${out} ${err}")
+endif()
+
+execute_process(COMMAND gzip -dc ${OUT}/results/rail_estimates.csv.gz
+                RESULT_VARIABLE code OUTPUT_VARIABLE estimates)
+if(NOT code EQUAL 0)
+  message(FATAL_ERROR "cannot read ${OUT}/results/rail_estimates.csv.gz")
+endif()
+string(REPLACE "\n" ";" lines "${estimates}")
+list(FILTER lines EXCLUDE REGEX "^$")
+list(POP_FRONT lines header)
+set(expected "sequence,variant,frame1,frame2,offset,matches,motion_px,true_inlier_rate,solver,budget_ms,time_ms,cpu_ms,hypotheses,inliers,inlier_rate,t_err_deg,r_err_deg,correct")
+if(NOT header STREQUAL expected)
+  message(FATAL_ERROR "rail_estimates.csv header: '${header}', expected '${expected}'")
+endif()
+list(LENGTH lines rows)
+if(NOT rows EQUAL 32)
+  message(FATAL_ERROR "rail_estimates.csv: ${rows} rows, expected 32")
+endif()
+set(checked 0)
+foreach(line IN LISTS lines)
+  if(line MATCHES "^horizontal,best20,0,10,10,[0-9]+,[0-9.]+,[0-9.]+,[a-z+]+,100,")
+    math(EXPR checked "${checked} + 1")
+    if(NOT line MATCHES ",1$")
+      message(FATAL_ERROR "not correct at 100 ms on the best 20%: ${line}")
+    endif()
+  endif()
+endforeach()
+if(NOT checked EQUAL 5)
+  message(FATAL_ERROR "${checked} rows at 100 ms on best20, expected 5 (one per solver)")
+endif()
+
+foreach(table_header
+    "rail_reliability_time.csv|sequence,variant,solver,budget_ms,pairs,correct,reliability,median_time_ms,mean_time_ms,mean_cpu_ms,mean_hypotheses,mean_true_inlier_rate"
+    "rail_reliability_motion.csv|sequence,variant,solver,budget_ms,motion_bin_px,pairs,mean_motion_px,correct,reliability,mean_true_inlier_rate")
+  string(REPLACE "|" ";" parts "${table_header}")
+  list(GET parts 0 table)
+  list(GET parts 1 columns)
+  file(STRINGS "${OUT}/results/${table}" table_lines)
+  list(LENGTH table_lines count)
+  list(GET table_lines 0 first)
+  if(NOT first STREQUAL columns OR count LESS 2)
+    message(FATAL_ERROR "${table}: header '${first}' (expected '${columns}'), ${count} lines")
+  endif()
+endforeach()
+
+foreach(figure rail_best20.png rail_random20.png)
+  set(path ${OUT}/figures/${figure})
+  if(NOT EXISTS ${path})
+    message(FATAL_ERROR "figure not written: ${path}")
+  endif()
+  file(SIZE ${path} size)
+  file(READ ${path} magic LIMIT 4 HEX)
+  if(size LESS 10000 OR NOT magic STREQUAL "89504e47")
+    message(FATAL_ERROR "${path}: ${size} bytes, starts with ${magic}: not a PNG figure")
+  endif()
+endforeach()

@@ -51,7 +51,10 @@ def claim_times(fig_a):
         for w in ratios:
             cells = []
             for m in methods:
-                t, knob, block = s.get((m, n, w), (math.nan, 0, 0))
+                if (m, n, w) not in s:
+                    cells.append("n/r")
+                    continue
+                t, knob, block = s[(m, n, w)]
                 extra = f" (M {knob}, B {block})" if block > 0 and not math.isnan(t) else ""
                 cells.append(fmt(t) + extra)
             lm = s.get(("lm", n, w), (math.nan,))[0]
@@ -59,7 +62,8 @@ def claim_times(fig_a):
             ni = s.get(("nister", n, w), (math.nan,))[0]
             print(f"| {n} | {w:.2f} | " + " | ".join(cells) +
                   f" | {fmt(ni / lm)} | {fmt(ni / gn)} |")
-    print("\n'-': 99% not reached within the time cap of a level (--max-ms).\n")
+    print("\n'-': 99% not reached within the time cap of a level (--max-ms); 'n/r': not run "
+          "(fewer than --min-inliers correct matches).\n")
 
     print("### Claim 4: which N reaches 99% fastest, per solver and inlier ratio\n")
     print("| solver | " + " | ".join(f"{w:.2f}" for w in ratios) + " |")

@@ -111,9 +111,12 @@ def claim_b60(levels_b):
     if not b60:
         return
     print("### Claim 5: 60% inliers, mean CPU time and final-refinement time against M\n")
-    print("| solver | B | M | reliability | mean ms | refinement ms | refinement iterations |")
+    print("| solver | B | M | reliability | mean CPU ms | refinement ms (wall) | refinement iterations |")
     print("|---|---|---|---|---|---|---|")
-    for r in sorted(b60, key=lambda r: (r["method"], int(r["block"]), int(r["knob"]))):
+    # Up to M = 640: beyond it every setting is at 1.000 and the time only grows with M (the
+    # CSV has the rest).
+    for r in sorted((r for r in b60 if int(r["knob"]) <= 640),
+                    key=lambda r: (r["method"], int(r["block"]), int(r["knob"]))):
         print(f"| {r['method']} | {r['block']} | {r['knob']} | {num(r['reliability']):.3f} | "
               f"{num(r['mean_ms']):.3f} | {num(r['mean_refine_ms']):.3f} | "
               f"{num(r['mean_refine_iterations']):.1f} |")

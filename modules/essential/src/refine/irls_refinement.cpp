@@ -5,6 +5,7 @@
 
 #include "geometry/essential_decomposition.hpp"
 #include "geometry/essential_parameterisation.hpp"
+#include "simd_dispatch.hpp"
 
 #include <Eigen/Cholesky>
 
@@ -61,8 +62,8 @@ given, the IRLS normal equations A d = -g there: Gauss-Newton on the Sampson res
 Cauchy weights w_i = 1 / (1 + s_i^2 / sigma^2) held fixed, A = sum w J J^T, g = sum w s J. One pass
 over the points computes both, so that an accepted step already has the next iteration's equations.
 Points with no Sampson distance (D = 0) take no part. */
-double evaluate(const Problem& p, const EssentialPose& pose, double sigma2, Matrix5d* A,
-                Vector5d* g)
+ESSENTIAL_AVX2_CLONES double evaluate(const Problem& p, const EssentialPose& pose, double sigma2,
+                                      Matrix5d* A, Vector5d* g)
 {
     const geometry::EssentialDerivatives derivatives(pose);
     const int n = p.size();

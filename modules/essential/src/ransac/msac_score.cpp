@@ -2,6 +2,7 @@
 // See the LICENSE file at the top of the source tree.
 
 #include "ransac/msac_score.hpp"
+#include "simd_dispatch.hpp"
 
 #include <algorithm>
 
@@ -43,7 +44,8 @@ Score scoreMsac(const Matx33d& E, const Problem& problem, double bestCost)
     return scoreMsacRange(E, problem, 0, problem.size(), bestCost);
 }
 
-Score scoreMsacRange(const Matx33d& E, const Problem& problem, int first, int last, double bestCost)
+ESSENTIAL_AVX2_CLONES Score scoreMsacRange(const Matx33d& E, const Problem& problem, int first,
+                                           int last, double bestCost)
 {
     const double t2 = problem.threshold * problem.threshold;
     Score s;
@@ -72,8 +74,8 @@ Score scoreMsacRange(const Matx33d& E, const Problem& problem, int first, int la
 points, so shorter blocks than kBlock waste less of the vectorised distance computation. */
 constexpr int kSprtBlock = 16;
 
-Score scoreMsacSprt(const Matx33d& E, const Problem& problem, double bestCost, const SprtTest& test,
-                    bool& rejected)
+ESSENTIAL_AVX2_CLONES Score scoreMsacSprt(const Matx33d& E, const Problem& problem, double bestCost,
+                                          const SprtTest& test, bool& rejected)
 {
     const double t2 = problem.threshold * problem.threshold;
     const int n = problem.size();
@@ -103,13 +105,14 @@ Score scoreMsacSprt(const Matx33d& E, const Problem& problem, double bestCost, c
     return s;
 }
 
-void sampsonErrors(const Matx33d& E, const Problem& problem, double* errors)
+ESSENTIAL_AVX2_CLONES void sampsonErrors(const Matx33d& E, const Problem& problem, double* errors)
 {
     sampsonBlock(E, problem.x1.data(), problem.y1.data(), problem.x2.data(), problem.y2.data(), 0,
                  problem.size(), errors);
 }
 
-int inlierMask(const Matx33d& E, const Problem& problem, double threshold, uchar* mask)
+ESSENTIAL_AVX2_CLONES int inlierMask(const Matx33d& E, const Problem& problem, double threshold,
+                                     uchar* mask)
 {
     const int n = problem.size();
     const double t2 = threshold * threshold;

@@ -5,9 +5,11 @@
 
 #include "geometry/essential_decomposition.hpp"
 #include "geometry/essential_parameterisation.hpp"
+#include "simd_dispatch.hpp"
 
 #include <Eigen/Cholesky>
 
+#include <algorithm>
 #include <cmath>
 
 namespace cv {
@@ -20,41 +22,176 @@ using geometry::EssentialPose;
 using geometry::Matrix5d;
 using geometry::Vector5d;
 
-/** Sum of the Cauchy loss over all points for E. */
-double robustCost(const Problem& p, const Eigen::Matrix3d& E, double sigma2)
-{
-    double cost = 0.0;
-    const int n = p.size();
-    for (int i = 0; i < n; ++i) {
-        const Eigen::Vector3d q1(p.x1[i], p.y1[i], 1.0), q2(p.x2[i], p.y2[i], 1.0);
-        const Eigen::Vector3d Eq1 = E * q1, Etq2 = E.transpose() * q2;
-        const double r = q2.dot(Eq1);
-        const double D = Eq1.head<2>().squaredNorm() + Etq2.head<2>().squaredNorm();
-        if (!(D > 0.0)) continue;
-        cost += std::log1p(r * r / (D * sigma2));
-    }
-    return 0.5 * sigma2 * cost;
-}
+/** The logarithm is the costliest part of the Cauchy loss: the sum of log(1 + u_i) is taken as
+the log of the product of the (1 + u_i) over runs of points, one log per run. Each factor is at
+least 1 and the product is flushed before it exceeds this bound, so it never overflows (a single
+factor above the bound, a far outlier, is flushed on its own). */
+constexpr double kProductFlush = 1e150;
 
-/** The IRLS normal equations A d = -g at pose: Gauss-Newton on the Sampson residuals s_i with the
-Cauchy weights w_i = 1 / (1 + s_i^2 / sigma^2) held fixed, A = sum w J J^T, g = sum w s J. */
-void normalEquations(const Problem& p, const EssentialPose& pose, double sigma2, Matrix5d& A,
-                     Vector5d& g)
+/** Points per block of the normal equations' two-stage loop (a multiple of kLanes), small enough
+for the block's arrays to stay in L1. */
+constexpr int kBlock = 64;
+
+/** Interleaved partial sums per entry of A and g: 4 fills one AVX register or two SSE2 ones. */
+constexpr int kLanes = 4;
+
+/** Accumulates sum_i log(1 + u_i) with one log per run of factors (see kProductFlush). */
+struct LogSum
+{
+    double sum = 0.0;
+    double product = 1.0;
+
+    void add(double u)
+    {
+        const double factor = 1.0 + u;
+        if (product * factor > kProductFlush || !(factor < kProductFlush)) {
+            sum += std::log(product);
+            product = 1.0;
+            if (!(factor < kProductFlush)) {
+                sum += std::log1p(u);
+                return;
+            }
+        }
+        product *= factor;
+    }
+    double total() const { return sum + std::log(product); }
+};
+
+/** The robust cost 0.5 sigma^2 sum_i log(1 + s_i^2 / sigma^2) of the pose and, when A and g are
+given, the IRLS normal equations A d = -g there: Gauss-Newton on the Sampson residuals s_i with the
+Cauchy weights w_i = 1 / (1 + s_i^2 / sigma^2) held fixed, A = sum w J J^T, g = sum w s J. One pass
+over the points computes both, so that an accepted step already has the next iteration's equations.
+Points with no Sampson distance (D = 0) take no part. */
+ESSENTIAL_AVX2_CLONES double evaluate(const Problem& p, const EssentialPose& pose, double sigma2,
+                                      Matrix5d* A, Vector5d* g)
 {
     const geometry::EssentialDerivatives derivatives(pose);
-    A.setZero();
-    g.setZero();
     const int n = p.size();
-    double J[5], s;
-    for (int i = 0; i < n; ++i) {
-        if (!geometry::sampsonResidualAndJacobian(derivatives, p.x1[i], p.y1[i], p.x2[i], p.y2[i],
-                                                  s, J))
-            continue;
-        const double w = 1.0 / (1.0 + s * s / sigma2);
-        const Eigen::Map<const Vector5d> j(J);
-        A.noalias() += w * j * j.transpose();
-        g.noalias() += (w * s) * j;
+    const double* x1 = p.x1.data();
+    const double* y1 = p.y1.data();
+    const double* x2 = p.x2.data();
+    const double* y2 = p.y2.data();
+    const double invSigma2 = 1.0 / sigma2;
+    LogSum logSum;
+    if (!A) {
+        const Eigen::Matrix3d& E = derivatives.E;
+        for (int i = 0; i < n; ++i) {
+            const double a = E(0, 0) * x1[i] + E(0, 1) * y1[i] + E(0, 2);
+            const double b = E(1, 0) * x1[i] + E(1, 1) * y1[i] + E(1, 2);
+            const double c = E(2, 0) * x1[i] + E(2, 1) * y1[i] + E(2, 2);
+            const double d = E(0, 0) * x2[i] + E(1, 0) * y2[i] + E(2, 0);
+            const double e = E(0, 1) * x2[i] + E(1, 1) * y2[i] + E(2, 1);
+            const double D = a * a + b * b + d * d + e * e;
+            if (!(D > 0.0)) continue;
+            const double r = x2[i] * a + y2[i] * b + c;
+            logSum.add(r * r / D * invSigma2);
+        }
+        return 0.5 * sigma2 * logSum.total();
     }
+    // Per block of points: first the Sampson residuals, Jacobians and weights into small arrays
+    // (a loop without reductions or branches, which the compiler vectorises), then the 15 distinct
+    // entries of the symmetric A and the 5 of g summed in kLanes interleaved partial sums (vertical
+    // adds the compiler vectorises too, without reassociating a scalar sum).
+    const Eigen::Matrix3d& E = derivatives.E;
+    const double e00 = E(0, 0), e01 = E(0, 1), e02 = E(0, 2), e10 = E(1, 0), e11 = E(1, 1);
+    const double e12 = E(1, 2), e20 = E(2, 0), e21 = E(2, 1), e22 = E(2, 2);
+    double dE[5][9];
+    for (int m = 0; m < 5; ++m)
+        for (int r = 0; r < 3; ++r)
+            for (int c = 0; c < 3; ++c)
+                dE[m][3 * r + c] = derivatives.dE[m](r, c);
+    alignas(32) double S[kBlock], W[kBlock], U[kBlock], J[5][kBlock];
+    alignas(32) double acc[20][kLanes] = {};
+    for (int begin = 0; begin < n; begin += kBlock) {
+        const int count = std::min(kBlock, n - begin);
+        const double* bx1 = x1 + begin;
+        const double* by1 = y1 + begin;
+        const double* bx2 = x2 + begin;
+        const double* by2 = y2 + begin;
+        for (int i = 0; i < count; ++i) {
+            const double a = e00 * bx1[i] + e01 * by1[i] + e02; // E q1
+            const double b = e10 * bx1[i] + e11 * by1[i] + e12;
+            const double c = e20 * bx1[i] + e21 * by1[i] + e22;
+            const double p = e00 * bx2[i] + e10 * by2[i] + e20; // E^T q2
+            const double q = e01 * bx2[i] + e11 * by2[i] + e21;
+            const double D = a * a + b * b + p * p + q * q;
+            // A point with D = 0 gets zero residual, Jacobian and weight: it adds nothing.
+            const double valid = D > 0.0 ? 1.0 : 0.0;
+            const double invSqrtD = valid / std::sqrt(D + (1.0 - valid));
+            const double r = bx2[i] * a + by2[i] * b + c;
+            const double sv = r * invSqrtD;
+            const double k = sv * invSqrtD; // r / D
+            // G = sqrt(D) ds/dE (geometry::sampsonResidualAndJacobian), G22 = 1.
+            const double alpha0 = bx2[i] - k * a, alpha1 = by2[i] - k * b;
+            const double beta0 = k * p, beta1 = k * q;
+            const double G00 = alpha0 * bx1[i] - bx2[i] * beta0;
+            const double G01 = alpha0 * by1[i] - bx2[i] * beta1;
+            const double G10 = alpha1 * bx1[i] - by2[i] * beta0;
+            const double G11 = alpha1 * by1[i] - by2[i] * beta1;
+            const double G20 = bx1[i] - beta0, G21 = by1[i] - beta1;
+            for (int m = 0; m < 5; ++m)
+                J[m][i] = invSqrtD * (G00 * dE[m][0] + G01 * dE[m][1] + alpha0 * dE[m][2] +
+                                      G10 * dE[m][3] + G11 * dE[m][4] + alpha1 * dE[m][5] +
+                                      G20 * dE[m][6] + G21 * dE[m][7] + dE[m][8]);
+            const double u = sv * sv * invSigma2;
+            S[i] = sv;
+            U[i] = D > 0.0 ? u : -1.0; // -1: no Sampson distance, not in the cost
+            W[i] = 1.0 / (1.0 + u);
+        }
+        for (int i = count; i < kBlock; ++i) { // pad the block to a multiple of kLanes
+            S[i] = W[i] = 0.0;
+            for (int m = 0; m < 5; ++m)
+                J[m][i] = 0.0;
+        }
+        for (int i = 0; i < count; ++i)
+            if (U[i] >= 0.0) logSum.add(U[i]);
+        const int padded = (count + kLanes - 1) / kLanes * kLanes;
+        for (int i = 0; i < padded; i += kLanes) {
+            for (int l = 0; l < kLanes; ++l) {
+                const double w = W[i + l], sv = S[i + l];
+                const double j0 = J[0][i + l], j1 = J[1][i + l], j2 = J[2][i + l];
+                const double j3 = J[3][i + l], j4 = J[4][i + l];
+                const double w0 = w * j0, w1 = w * j1, w2 = w * j2, w3 = w * j3, w4 = w * j4;
+                acc[0][l] += w0 * j0;
+                acc[1][l] += w0 * j1;
+                acc[2][l] += w0 * j2;
+                acc[3][l] += w0 * j3;
+                acc[4][l] += w0 * j4;
+                acc[5][l] += w1 * j1;
+                acc[6][l] += w1 * j2;
+                acc[7][l] += w1 * j3;
+                acc[8][l] += w1 * j4;
+                acc[9][l] += w2 * j2;
+                acc[10][l] += w2 * j3;
+                acc[11][l] += w2 * j4;
+                acc[12][l] += w3 * j3;
+                acc[13][l] += w3 * j4;
+                acc[14][l] += w4 * j4;
+                acc[15][l] += w0 * sv;
+                acc[16][l] += w1 * sv;
+                acc[17][l] += w2 * sv;
+                acc[18][l] += w3 * sv;
+                acc[19][l] += w4 * sv;
+            }
+        }
+    }
+    double sum[20];
+    for (int k = 0; k < 20; ++k) {
+        sum[k] = 0.0;
+        for (int l = 0; l < kLanes; ++l)
+            sum[k] += acc[k][l];
+    }
+    const double a00 = sum[0], a01 = sum[1], a02 = sum[2], a03 = sum[3], a04 = sum[4];
+    const double a11 = sum[5], a12 = sum[6], a13 = sum[7], a14 = sum[8], a22 = sum[9];
+    const double a23 = sum[10], a24 = sum[11], a33 = sum[12], a34 = sum[13], a44 = sum[14];
+    const double g0 = sum[15], g1 = sum[16], g2 = sum[17], g3 = sum[18], g4 = sum[19];
+    *A << a00, a01, a02, a03, a04, //
+        a01, a11, a12, a13, a14,   //
+        a02, a12, a22, a23, a24,   //
+        a03, a13, a23, a33, a34,   //
+        a04, a14, a24, a34, a44;
+    *g << g0, g1, g2, g3, g4;
+    return 0.5 * sigma2 * logSum.total();
 }
 
 } // namespace
@@ -72,17 +209,19 @@ IrlsResult refineIrls(const Problem& problem, const Matx33d& E0, double scale,
     if (!geometry::poseFromEssential(E, pose)) return result;
 
     const double sigma2 = scale * scale;
-    double cost = robustCost(problem, pose.E(), sigma2);
+    Matrix5d A, trialA;
+    Vector5d g, trialG;
+    double cost = evaluate(problem, pose, sigma2, &A, &g);
     const double initialCost = cost;
     double lambda = 1e-4;
-    Matrix5d A;
-    Vector5d g;
     for (int it = 0; it < settings.maxIterations; ++it) {
         result.iterations = it + 1;
-        normalEquations(problem, pose, sigma2, A, g);
         bool accepted = false;
         // Up to a few damping increases per iteration; a failure at the largest damping means the
-        // pose is at a minimum of the robust cost to working precision.
+        // pose is at a minimum of the robust cost to working precision. The first trial computes
+        // the normal equations along with its cost (they are the next iteration's if it is
+        // accepted, as it nearly always is); retries after a rejection are cost-only, and the
+        // equations are then computed once for the retry that is accepted.
         for (int attempt = 0; attempt < 6 && !accepted; ++attempt) {
             Matrix5d damped = A;
             damped.diagonal() *= 1.0 + lambda;
@@ -90,14 +229,24 @@ IrlsResult refineIrls(const Problem& problem, const Matx33d& E0, double scale,
             if (!step.allFinite()) break;
             EssentialPose trial = pose;
             trial.update(step);
-            const double trialCost = robustCost(problem, trial.E(), sigma2);
+            const bool withEquations = attempt == 0;
+            const double trialCost =
+                evaluate(problem, trial, sigma2, withEquations ? &trialA : nullptr,
+                         withEquations ? &trialG : nullptr);
             if (trialCost < cost) {
                 const double decrease = (cost - trialCost) / cost;
                 pose = trial;
                 cost = trialCost;
                 lambda = std::max(lambda * 0.1, 1e-12);
                 accepted = true;
-                if (decrease < settings.relativeTolerance) it = settings.maxIterations;
+                if (decrease < settings.relativeTolerance) {
+                    it = settings.maxIterations;
+                } else if (withEquations) {
+                    A = trialA;
+                    g = trialG;
+                } else {
+                    evaluate(problem, pose, sigma2, &A, &g);
+                }
             } else {
                 lambda *= 10.0;
             }

@@ -94,7 +94,11 @@ struct CV_EXPORTS EssentialParams
     reliability goes from 0.940 to 0.943. On the Leuven pair (essential_pair, seeds 1 to 20) the
     mean inlier count goes from 327 to 338, 12 runs instead of 8 reaching the better of the two
     solutions (about 355 inliers). IRLS mostly converges within 5 iterations: 10 gives the same
-    results, 1 to 3 save fewer samples. */
+    results, 1 to 3 save fewer samples. A best model supported by less than half of the points is
+    first given 10 inner samples (LO-RANSAC's inner RANSAC: minimal samples drawn among the points
+    within 3 thresholds of it, solved and scored like the search's, once 50 samples have been
+    drawn); on 300 problems this raised the reliability at 30% inliers from 0.977 to 0.993 and at
+    25% from 0.810 to 0.957 with the same sample cap (docs/PERFORMANCE.md). */
     int loIterations = 5;
 
     /** LO on a random subset of this many of the model's inliers; 0 (default): on all of them.
@@ -148,7 +152,7 @@ struct CV_EXPORTS EssentialReport
     int numPoints = 0;           //!< correspondences given
     int inliers = 0;             //!< non-zero entries of the returned mask
     int iterations = 0;          //!< samples drawn (at most maxIters / solver success rate)
-    int hypothesesGenerated = 0; //!< solver calls made (one per sample)
+    int hypothesesGenerated = 0; //!< solver calls made (one per sample, plus LO's inner samples)
     int hypothesesConverged = 0; //!< essential matrices the solver returned
     int hypothesesScored = 0;    //!< essential matrices scored against the data
     int refineIterations = 0;    //!< IRLS iterations of the final refinement

@@ -1,0 +1,22 @@
+// This file is part of opencv_essential, licensed under the Apache License, Version 2.0.
+// See the LICENSE file at the top of the source tree.
+
+// Runtime dispatch of the hot loops to an AVX2 build of themselves. The default build targets any
+// x86-64 (SSE2: two doubles per vector); on a CPU with AVX2 (four) the loader picks the AVX2 clone
+// of each marked function once, through an ifunc. Only AVX2 is enabled in the clone, not FMA, so
+// that no multiply-add is contracted and both clones compute bit-identical results: the loops are
+// written so that vector width does not change the order of any sum (docs/PERFORMANCE.md, "AVX2
+// clones"). A build with -march=native (ESSENTIAL_NATIVE) or without GCC's ifunc support on
+// x86-64 Linux compiles the functions once, as they are.
+
+#ifndef OPENCV_ESSENTIAL_SIMD_DISPATCH_HPP
+#define OPENCV_ESSENTIAL_SIMD_DISPATCH_HPP
+
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__) &&       \
+    !defined(__AVX2__) && !defined(ESSENTIAL_NO_CLONES)
+#define ESSENTIAL_AVX2_CLONES __attribute__((target_clones("avx2", "default")))
+#else
+#define ESSENTIAL_AVX2_CLONES
+#endif
+
+#endif

@@ -7,6 +7,7 @@
 
 #include "opencv2/essential.hpp"
 
+#include "geometry/degeneracy.hpp"
 #include "geometry/essential_decomposition.hpp"
 #include "pose/pose_recovery.hpp"
 #include "problem.hpp"
@@ -17,6 +18,8 @@
 
 #include <opencv2/calib3d.hpp>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -127,6 +130,35 @@ double finishingReserveMs(int numPoints)
     return 0.05 + 0.0005 * numPoints;
 }
 
+/** EssentialReport::degenerate: an inlier counts as explained by a rotation alone (or by a
+homography) when its image-2 position is within this many Sampson thresholds of the rotated ray (or
+mapped point) of image 1: the same noise gives a transfer distance in one image of about twice the
+Sampson distance, which splits the error between both images. */
+constexpr double kRotationOnlyDistance = 2.0;
+
+/** ... and the estimate is degenerate when at least this fraction of its inliers is so explained.
+Measured in docs/ROBUSTNESS.md ("Degenerate scenes"): 1.00 for pure rotation, planes and baselines
+of 1e-4; at most 0.036 (rotation) and 0.093 (homography) on 120 problems of the synthetic
+protocol (test DegenerateScenes.SyntheticProtocolIsNeverFlagged prints them). */
+constexpr double kDegenerateFraction = 0.9;
+
+/** Five correspondences are a minimal set: an essential matrix fits any five exactly. */
+constexpr int kMinimalSample = 5;
+
+/** The number of distinct correspondences among the inliers. Repeated correspondences add no
+constraint: five distinct points given twelve times each are fitted exactly by up to ten essential
+matrices, and 60 "inliers" of one of them are no evidence (the chance-support test counts points,
+not distinct ones). Runs once per estimate, on the inliers only. */
+int distinctInliers(const Problem& problem, const std::vector<uchar>& mask)
+{
+    std::vector<std::array<double, 4>> rows;
+    rows.reserve(mask.size());
+    for (size_t i = 0; i < mask.size(); ++i)
+        if (mask[i]) rows.push_back({problem.x1[i], problem.y1[i], problem.x2[i], problem.y2[i]});
+    std::sort(rows.begin(), rows.end());
+    return static_cast<int>(std::unique(rows.begin(), rows.end()) - rows.begin());
+}
+
 /** The pipeline shared by every overload. `problem` holds normalised points and threshold. */
 Mat estimate(const Problem& problem, const EssentialParams& params, OutputArray mask,
              EssentialReport* report, int64 start)
@@ -221,7 +253,7 @@ Mat estimate(const Problem& problem, const EssentialParams& params, OutputArray 
     }
     rep.inliers = ransac::inlierMask(E, problem, found.threshold, inliers.data());
     rep.timeRefineMs = msSince(tRefine);
-    if (rep.inliers < 5 ||
+    if (rep.inliers < 5 || distinctInliers(problem, inliers) <= kMinimalSample ||
         !ransac::supportIsSignificant(E, problem, found.threshold, rep.inliers,
                                       solver->sampleSize(), std::max(1, found.hypothesesScored))) {
         std::fill(inliers.begin(), inliers.end(), uchar(0));
@@ -232,6 +264,16 @@ Mat estimate(const Problem& problem, const EssentialParams& params, OutputArray 
     }
     rep.success = true;
     rep.E = E;
+    if (report) {
+        rep.rotationOnlyFraction =
+            geometry::rotationOnlyFraction(problem.p1.data(), problem.p2.data(), inliers.data(), n,
+                                           kRotationOnlyDistance * found.threshold);
+        rep.homographyFraction =
+            geometry::homographyFraction(problem.p1.data(), problem.p2.data(), inliers.data(), n,
+                                         kRotationOnlyDistance * found.threshold);
+        rep.degenerate = rep.rotationOnlyFraction >= kDegenerateFraction ||
+                         rep.homographyFraction >= kDegenerateFraction;
+    }
 
     if (report && params.recoverPose) {
         const int64 tPose = getTickCount();
@@ -371,9 +413,12 @@ Mat estimateWithCamera(InputArray points1, InputArray points2, const Matx33d& K,
     std::vector<Point2d> p1 = readPoints(points1, "points1");
     std::vector<Point2d> p2 = readPoints(points2, "points2");
     checkPointSets(p1, p2, 5);
-    const double meanFocal = 0.5 * (std::abs(K(0, 0)) + std::abs(K(1, 1)));
+    const double meanFocal = 0.5 * (K(0, 0) + K(1, 1));
+    std::vector<Point2d> n1 = normalisePoints(p1, K), n2 = normalisePoints(p2, K);
+    checkNormalisedPoints(n1, "points1");
+    checkNormalisedPoints(n2, "points2");
     Problem problem =
-        makeProblem(normalisePoints(p1, K), normalisePoints(p2, K), params.threshold / meanFocal);
+        makeProblem(std::move(n1), std::move(n2), normalisedThreshold(params.threshold, meanFocal));
     return estimate(problem, params, mask, report, start);
 }
 
@@ -409,9 +454,12 @@ Mat estimateTwoCameras(InputArray points1, InputArray points2, InputArray camera
     std::vector<Point2d> n1, n2;
     undistortPoints(p1, n1, K1, distCoeffs1);
     undistortPoints(p2, n2, K2, distCoeffs2);
-    const double meanFocal =
-        0.25 * (std::abs(K1(0, 0)) + std::abs(K1(1, 1)) + std::abs(K2(0, 0)) + std::abs(K2(1, 1)));
-    Problem problem = makeProblem(std::move(n1), std::move(n2), params.threshold / meanFocal);
+    // Extreme distortion coefficients can send undistorted points to infinity or NaN.
+    checkNormalisedPoints(n1, "points1 (undistorted with distCoeffs1)");
+    checkNormalisedPoints(n2, "points2 (undistorted with distCoeffs2)");
+    const double meanFocal = 0.25 * (K1(0, 0) + K1(1, 1) + K2(0, 0) + K2(1, 1));
+    Problem problem =
+        makeProblem(std::move(n1), std::move(n2), normalisedThreshold(params.threshold, meanFocal));
     return estimate(problem, params, mask, nullptr, start);
 }
 

@@ -4,7 +4,8 @@
 # Licensed under the Apache License, Version 2.0.
 set -euo pipefail
 
-packages=(cmake g++ make python3 libopencv-dev libeigen3-dev libgtest-dev libbenchmark-dev nlohmann-json3-dev)
+packages=(cmake g++ make python3 libopencv-dev libeigen3-dev libgtest-dev libbenchmark-dev nlohmann-json3-dev
+          clang libclang-rt-14-dev) # clang and its sanitizer / libFuzzer runtimes: sanitize.sh, fuzz.sh
 
 missing=()
 for pkg in "${packages[@]}"; do

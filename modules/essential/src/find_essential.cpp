@@ -137,9 +137,11 @@ Sampson distance, which splits the error between both images. */
 constexpr double kRotationOnlyDistance = 2.0;
 
 /** ... and the estimate is degenerate when at least this fraction of its inliers is so explained.
-Measured in docs/ROBUSTNESS.md ("Degenerate scenes"): 1.00 for pure rotation, planes and baselines
-of 1e-4; at most 0.036 (rotation) and 0.093 (homography) on 120 problems of the synthetic
-protocol (test DegenerateScenes.SyntheticProtocolIsNeverFlagged prints them). */
+Measured (test/test_degenerate_scenes.cpp, 300 points, 0.5 px noise, 10 scenes each): pure rotation
+and baselines of 1e-4 give rotation-only fractions of 0.976 to 0.997 (the remainder is noise beyond
+twice the threshold), planes and single-depth scenes homography fractions of 0.968 to 1; a baseline
+of 0.05 gives at most 0.11 and 0.31, and 120 problems of the synthetic protocol at most 0.036 and
+0.093. */
 constexpr double kDegenerateFraction = 0.9;
 
 /** Five correspondences are a minimal set: an essential matrix fits any five exactly. */

@@ -32,16 +32,53 @@ using essential_fuzz::FuzzInput;
     std::abort();
 }
 
-/** Points in one of the layouts the API accepts (or a wrong one): vector<Point2d>, vector<Point2f>,
-N x 2 one-channel, N x 1 two-channel, 1 x N two-channel, or another depth. */
-cv::Mat makePoints(FuzzInput& in, int n)
+/** Correspondences with geometry, so that the fuzzer reaches the paths after a successful search
+(refinement, pose, the degeneracy measures): points in front of camera 1 (camera 500, 320, 240)
+moved by a fuzzed rotation and translation (zero allowed), projected, then a few coordinates
+overwritten by fuzzed values. */
+void makeScenePoints(FuzzInput& in, int n, std::vector<cv::Point2d>& a, std::vector<cv::Point2d>& b)
 {
-    const int layout = in.pick(8);
-    std::vector<cv::Point2d> pts(static_cast<size_t>(n));
-    for (cv::Point2d& p : pts) {
-        p.x = in.coordinate();
-        p.y = in.coordinate();
+    const cv::Vec3d rvec(in.unit() - 0.5, in.unit() - 0.5, in.unit() - 0.5);
+    cv::Matx33d R;
+    cv::Rodrigues(rvec, R);
+    const double scale = in.pick(4) == 0 ? 0.0 : in.unit();
+    const cv::Vec3d t = scale * cv::Vec3d(in.unit() - 0.5, in.unit() - 0.5, in.unit() - 0.5);
+    const bool planar = in.pick(4) == 0;
+    a.resize(static_cast<size_t>(n));
+    b.resize(static_cast<size_t>(n));
+    for (int i = 0; i < n; ++i) {
+        const double u = 2.0 * in.unit() - 1.0, v = 2.0 * in.unit() - 1.0;
+        const double depth = planar ? 4.0 : 1.0 + 20.0 * in.unit();
+        const cv::Vec3d X(u * depth, v * depth, depth);
+        const cv::Vec3d Y = R * X + t;
+        a[static_cast<size_t>(i)] = cv::Point2d(500 * u + 320, 500 * v + 240);
+        const double z = std::abs(Y[2]) > 1e-6 ? Y[2] : 1e-6;
+        b[static_cast<size_t>(i)] = cv::Point2d(500 * Y[0] / z + 320, 500 * Y[1] / z + 240);
     }
+    for (int k = in.pick(4); k > 0 && n > 0; --k) {
+        std::vector<cv::Point2d>& side = in.pick(2) ? a : b;
+        cv::Point2d& p = side[static_cast<size_t>(in.pick(n))];
+        (in.pick(2) ? p.x : p.y) = in.anyDouble();
+    }
+}
+
+/** Points in one of the layouts the API accepts (or a wrong one): vector<Point2d>, vector<Point2f>,
+N x 2 one-channel, N x 1 two-channel, 1 x N two-channel, or another depth. `given` holds the
+coordinates, or is empty for coordinates read from the input. */
+cv::Mat makePoints(FuzzInput& in, int n, std::vector<cv::Point2d> given = {})
+{
+    // Mostly valid layouts, so that most inputs get past the input checks.
+    static const int layouts[] = {0, 1, 2, 3, 7, 0, 1, 2, 3, 7, 0, 2, 4, 5, 6, 7};
+    const int layout = layouts[in.pick(16)];
+    std::vector<cv::Point2d> pts = std::move(given);
+    if (pts.empty()) {
+        pts.resize(static_cast<size_t>(n));
+        for (cv::Point2d& p : pts) {
+            p.x = in.coordinate();
+            p.y = in.coordinate();
+        }
+    }
+    n = static_cast<int>(pts.size());
     cv::Mat m(pts, true); // N x 1 CV_64FC2
     switch (layout) {
     case 0:
@@ -76,7 +113,7 @@ cv::Mat makePoints(FuzzInput& in, int n)
 shape. */
 cv::Mat makeCamera(FuzzInput& in)
 {
-    switch (in.pick(6)) {
+    switch (in.pick(12)) {
     case 0: {
         cv::Mat k(3, 3, CV_64F);
         for (int i = 0; i < 9; ++i)
@@ -91,9 +128,9 @@ cv::Mat makeCamera(FuzzInput& in)
         return k;
     }
     default: {
-        const double f = in.pick(4) == 0 ? in.anyDouble() : 100.0 + in.pick(1000);
-        const double fy = in.pick(4) == 0 ? -f : f;
-        const double skew = in.pick(3) == 0 ? in.anyDouble() : 0.0;
+        const double f = in.pick(8) == 0 ? in.anyDouble() : 100.0 + in.pick(1000);
+        const double fy = in.pick(8) == 0 ? -f : f;
+        const double skew = in.pick(8) == 0 ? in.anyDouble() : 0.0;
         return (cv::Mat_<double>(3, 3) << f, skew, in.pick(640), 0, fy, in.pick(480), 0, 0, 1);
     }
     }
@@ -124,17 +161,17 @@ int makeMethod(FuzzInput& in)
                                   -1,
                                   12345,
                                   1};
-    return methods[in.pick(12)];
+    return in.pick(8) == 0 ? methods[in.pick(12)] : methods[in.pick(9)];
 }
 
 double makeProb(FuzzInput& in)
 {
-    return in.pick(4) == 0 ? in.anyDouble() : 0.5 + 0.499 * in.unit();
+    return in.pick(8) == 0 ? in.anyDouble() : 0.5 + 0.499 * in.unit();
 }
 
 double makeThreshold(FuzzInput& in)
 {
-    return in.pick(4) == 0 ? in.anyDouble() : 0.1 + 5.0 * in.unit();
+    return in.pick(8) == 0 ? in.anyDouble() : 0.1 + 5.0 * in.unit();
 }
 
 /** Iteration caps stay small: a cap of 1e9 on data without geometry is a legitimate long run (the
@@ -180,10 +217,18 @@ void runOne(FuzzInput& in)
 {
     const int api = in.pick(9);
     // Mostly the same count in both views; sometimes not. Mostly enough points to search.
-    const int n = in.pick(3) == 0 ? in.pick(8) : 5 + in.pick(60);
-    const int n2 = in.pick(8) == 0 ? in.pick(70) : n;
-    const cv::Mat p1 = makePoints(in, n);
-    const cv::Mat p2 = makePoints(in, n2);
+    const int n = in.pick(8) == 0 ? in.pick(8) : 5 + in.pick(60);
+    const int n2 = in.pick(16) == 0 ? in.pick(70) : n;
+    cv::Mat p1, p2;
+    if (in.pick(2) && n == n2 && n > 0) {
+        std::vector<cv::Point2d> a, b;
+        makeScenePoints(in, n, a, b);
+        p1 = makePoints(in, n, a);
+        p2 = makePoints(in, n, b);
+    } else {
+        p1 = makePoints(in, n);
+        p2 = makePoints(in, n2);
+    }
     const bool wantMask = in.pick(4) != 0;
     cv::Mat mask;
     namespace ess = cv::essential;
@@ -238,11 +283,14 @@ void runOne(FuzzInput& in)
         usac.threshold = makeThreshold(in);
         usac.maxIterations = makeMaxIters(in);
         usac.randomGeneratorState = static_cast<int>(in.pick(1 << 30));
-        usac.score = static_cast<cv::ScoreMethod>(in.pick(6));
-        usac.sampler = static_cast<cv::SamplingMethod>(in.pick(6));
-        usac.loMethod = static_cast<cv::LocalOptimMethod>(in.pick(7));
-        usac.loIterations = in.pick(12) - 1;
-        usac.loSampleSize = in.pick(20) - 1;
+        usac.score = static_cast<cv::ScoreMethod>(in.pick(8) == 0 ? in.pick(6) : in.pick(4));
+        usac.sampler = static_cast<cv::SamplingMethod>(
+            in.pick(8) == 0 ? in.pick(6)
+                            : (in.pick(2) ? cv::SAMPLING_UNIFORM : cv::SAMPLING_PROSAC));
+        usac.loMethod =
+            static_cast<cv::LocalOptimMethod>(in.pick(8) == 0 ? in.pick(7) : in.pick(5));
+        usac.loIterations = in.pick(8) == 0 ? in.pick(12) - 1 : in.pick(12);
+        usac.loSampleSize = in.pick(8) == 0 ? in.pick(20) - 1 : (in.pick(2) ? 0 : 5 + in.pick(20));
         const cv::Mat E = ess::findEssentialMatIter(p1, p2, K1, K2, d1, d2, mask, usac);
         checkEssential(E, mask, n, true);
         break;
@@ -252,19 +300,20 @@ void runOne(FuzzInput& in)
         ess::EssentialParams params;
         static const char* solvers[] = {"gn",        "lm",      "nister", "robust", "gn+nister",
                                         "gn:3+lm:1", "no_such", "",       "gn+",    "gn:0"};
-        params.solver = solvers[in.pick(10)];
+        params.solver = in.pick(4) == 0 ? solvers[in.pick(10)] : solvers[in.pick(6)];
         params.method = in.pick(6) == 0 ? makeMethod(in) : (in.pick(2) ? cv::RANSAC : cv::LMEDS);
-        params.engine = in.pick(8) == 0 ? in.pick(5) - 1 : in.pick(3);
+        params.engine = in.pick(16) == 0 ? in.pick(5) - 1 : in.pick(3);
         params.timeBudgetMs = in.pick(5) == 0 ? in.anyDouble() : 0.0;
         if (params.timeBudgetMs > 50) params.timeBudgetMs = 50; // keep runs short
-        params.preemptiveHypotheses = in.pick(60) - 2;
-        params.preemptiveBlockSize = in.pick(120) - 2;
+        params.preemptiveHypotheses = in.pick(16) == 0 ? in.pick(60) - 2 : in.pick(60);
+        params.preemptiveBlockSize = in.pick(16) == 0 ? in.pick(120) - 2 : 1 + in.pick(120);
         params.confidence = makeProb(in);
         params.threshold = makeThreshold(in);
         params.maxIters = makeMaxIters(in);
-        params.loIterations = in.pick(8) - 1;
-        params.loSampleSize = in.pick(12) - 1;
-        params.sampler = in.pick(6) == 0 ? in.pick(6) - 1 : 0;
+        params.loIterations = in.pick(16) == 0 ? in.pick(8) - 1 : in.pick(8);
+        params.loSampleSize =
+            in.pick(8) == 0 ? in.pick(12) - 1 : (in.pick(2) ? 0 : 5 + in.pick(20));
+        params.sampler = in.pick(16) == 0 ? in.pick(6) - 1 : (in.pick(4) ? 0 : cv::SAMPLING_PROSAC);
         params.sprt = in.pick(2) != 0;
         params.seed = in.pick(1 << 30);
         params.refine = in.pick(4) != 0;

@@ -57,12 +57,13 @@ public:
         return d;
     }
 
-    /** A pixel coordinate: mostly in [0, 1024), sometimes any double, sometimes repeated. */
+    /** A pixel coordinate: mostly in [0, 1024), rarely any double (1 in 256: an input has dozens of
+    coordinates, and one bad one rejects it), sometimes the previous value again. */
     double coordinate()
     {
-        const int kind = pick(16);
+        const int kind = pick(256);
         if (kind == 0) return anyDouble();
-        if (kind == 1) return last_;
+        if (kind <= 8) return last_;
         last_ = 1024.0 * unit();
         return last_;
     }

@@ -208,8 +208,8 @@ TEST(DegenerateScenes, PlanarSceneIsFlagged)
 {
     Summary summary("plane");
     // A tilted plane, general motion: a homography explains every inlier, and two poses fit them
-    // equally well (the plane's twofold ambiguity); the one returned was wrong by 5 to 90 degrees
-    // in about half of these scenes before the flag existed. The report says so.
+    // equally well (the plane's twofold ambiguity), and the one returned is the wrong one in 1 of
+    // these 10 scenes (5 of the 10 single-depth scenes below). The report says so.
     for (uint64_t seed = 1; seed <= 10; ++seed) {
         SCOPED_TRACE(seed);
         const Scene s = makeScene(seed, 300, 0.5, Structure::Plane);

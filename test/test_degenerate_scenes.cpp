@@ -262,7 +262,10 @@ TEST(DegenerateScenes, ExactlyFivePointsListEverySolution)
             const double b = cv::norm(e / cv::norm(e) + truth * (1.0 / cv::norm(truth)));
             best = std::min(best, std::min(a, b));
         }
-        found += best < 1e-6;
+        // Closest root measured at most 9.7e-8 (gcc Release) and 7.8e-6 (clang -O1, sanitizer
+        // build: other rounding, other iterative starts); 1e-4 is the module's own "same root"
+        // tolerance (kSameSolution in find_essential.cpp). A wrong root is 0.1 or more away.
+        found += best < 1e-4;
         std::cout << "five points, seed " << seed << ": " << E.rows / 3
                   << " solutions, closest to the truth " << best << "\n";
     }

@@ -21,6 +21,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <vector>
 
 namespace cv {
@@ -342,10 +343,23 @@ EssentialParams dropInParams(int method, double prob, double threshold, int maxI
 }
 
 /** The module's settings from a UsacParams (the mapping documented in essential.hpp). */
+/** An enum field of UsacParams as the int it holds. A value outside the enumeration (which a caller
+can make only by a cast) must be rejected with a message, but loading it as the enum type is
+undefined behaviour (UBSan's -fsanitize=enum reports it), so the bytes are read as an int. */
+template <typename Enum> int rawEnum(const Enum& field)
+{
+    static_assert(sizeof(Enum) == sizeof(int), "UsacParams enums are int-sized");
+    int value;
+    std::memcpy(&value, &field, sizeof value);
+    return value;
+}
+
 EssentialParams usacParams(const UsacParams& usac)
 {
     EssentialParams p;
-    switch (usac.score) {
+    const int score = rawEnum(usac.score), sampler = rawEnum(usac.sampler),
+              loMethod = rawEnum(usac.loMethod);
+    switch (score) {
     case SCORE_METHOD_RANSAC:
     case SCORE_METHOD_MSAC:
     case SCORE_METHOD_MAGSAC:
@@ -356,12 +370,12 @@ EssentialParams usacParams(const UsacParams& usac)
         break;
     default:
         CV_Error(Error::StsBadArg,
-                 "UsacParams::score " + std::to_string(int(usac.score)) + " is not a ScoreMethod");
+                 "UsacParams::score " + std::to_string(score) + " is not a ScoreMethod");
     }
-    switch (usac.sampler) {
+    switch (sampler) {
     case SAMPLING_UNIFORM:
     case SAMPLING_PROSAC:
-        p.sampler = usac.sampler;
+        p.sampler = sampler;
         break;
     case SAMPLING_NAPSAC:
         CV_Error(Error::StsNotImplemented,
@@ -372,10 +386,10 @@ EssentialParams usacParams(const UsacParams& usac)
                  "UsacParams::sampler SAMPLING_PROGRESSIVE_NAPSAC is not supported: use "
                  "SAMPLING_UNIFORM or SAMPLING_PROSAC");
     default:
-        CV_Error(Error::StsBadArg, "UsacParams::sampler " + std::to_string(int(usac.sampler)) +
-                                       " is not a SamplingMethod");
+        CV_Error(Error::StsBadArg,
+                 "UsacParams::sampler " + std::to_string(sampler) + " is not a SamplingMethod");
     }
-    switch (usac.loMethod) {
+    switch (loMethod) {
     case LOCAL_OPTIM_NULL:
         p.loIterations = 0;
         break;
@@ -394,8 +408,8 @@ EssentialParams usacParams(const UsacParams& usac)
         p.loSampleSize = usac.loSampleSize;
         break;
     default:
-        CV_Error(Error::StsBadArg, "UsacParams::loMethod " + std::to_string(int(usac.loMethod)) +
-                                       " is not a LocalOptimMethod");
+        CV_Error(Error::StsBadArg,
+                 "UsacParams::loMethod " + std::to_string(loMethod) + " is not a LocalOptimMethod");
     }
     // isParallel and neighborsSearch are ignored (see essential.hpp).
     checkConfidence(usac.confidence);

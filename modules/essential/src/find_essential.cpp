@@ -148,18 +148,28 @@ constexpr double kDegenerateFraction = 0.9;
 /** Five correspondences are a minimal set: an essential matrix fits any five exactly. */
 constexpr int kMinimalSample = 5;
 
-/** The number of distinct correspondences among the inliers. Repeated correspondences add no
-constraint: five distinct points given twelve times each are fitted exactly by up to ten essential
-matrices, and 60 "inliers" of one of them are no evidence (the chance-support test counts points,
-not distinct ones). Runs once per estimate, on the inliers only. */
-int distinctInliers(const Problem& problem, const std::vector<uchar>& mask)
+/** Whether the inliers hold more than `count` (<= kMinimalSample) distinct correspondences.
+Repeated correspondences add no constraint: five distinct points given twelve times each are fitted
+exactly by up to ten essential matrices, and 60 "inliers" of one of them are no evidence (the
+chance-support test counts points, not distinct ones). Stops at the first count + 1 distinct ones,
+so on ordinary data it looks at a handful of points. */
+bool moreDistinctInliersThan(const Problem& problem, const std::vector<uchar>& mask, int count)
 {
-    std::vector<std::array<double, 4>> rows;
-    rows.reserve(mask.size());
-    for (size_t i = 0; i < mask.size(); ++i)
-        if (mask[i]) rows.push_back({problem.x1[i], problem.y1[i], problem.x2[i], problem.y2[i]});
-    std::sort(rows.begin(), rows.end());
-    return static_cast<int>(std::unique(rows.begin(), rows.end()) - rows.begin());
+    std::array<size_t, kMinimalSample + 1> distinct{};
+    int found = 0;
+    for (size_t i = 0; i < mask.size(); ++i) {
+        if (!mask[i]) continue;
+        bool repeated = false;
+        for (int k = 0; k < found && !repeated; ++k) {
+            const size_t j = distinct[static_cast<size_t>(k)];
+            repeated = problem.x1[i] == problem.x1[j] && problem.y1[i] == problem.y1[j] &&
+                       problem.x2[i] == problem.x2[j] && problem.y2[i] == problem.y2[j];
+        }
+        if (repeated) continue;
+        distinct[static_cast<size_t>(found++)] = i;
+        if (found > count) return true;
+    }
+    return false;
 }
 
 /** The pipeline shared by every overload. `problem` holds normalised points and threshold. */
@@ -256,7 +266,7 @@ Mat estimate(const Problem& problem, const EssentialParams& params, OutputArray 
     }
     rep.inliers = ransac::inlierMask(E, problem, found.threshold, inliers.data());
     rep.timeRefineMs = msSince(tRefine);
-    if (rep.inliers < 5 || distinctInliers(problem, inliers) <= kMinimalSample ||
+    if (rep.inliers < 5 || !moreDistinctInliersThan(problem, inliers, kMinimalSample) ||
         !ransac::supportIsSignificant(E, problem, found.threshold, rep.inliers,
                                       solver->sampleSize(), std::max(1, found.hypothesesScored))) {
         std::fill(inliers.begin(), inliers.end(), uchar(0));

@@ -439,6 +439,18 @@ int run(int argc, char** argv)
                                                           params, mask, &report);
     const double timeEssential = elapsedMs(start);
     const bool found = !E.empty() && report.success;
+    // A model that does not determine the pose (no parallax, or a plane) is still printed, with
+    // this warning: docs/ROBUSTNESS.md, "Degenerate scenes".
+    std::string degenerateNote;
+    if (found && report.degenerate)
+        degenerateNote = cv::format(
+            "degenerate estimate: a rotation explains %.0f%% and a homography %.0f%% of the "
+            "inliers; %s",
+            100.0 * report.rotationOnlyFraction, 100.0 * report.homographyFraction,
+            report.rotationOnlyFraction >= 0.9
+                ? "no parallax, the translation direction is undetermined"
+                : "a planar scene, two poses fit and this one may be the wrong one");
+    if (!degenerateNote.empty()) std::cerr << "essential_pair: warning: " << degenerateNote << "\n";
 
     // OpenCV on the same matches.
     cv::Mat cvMask;
@@ -497,6 +509,9 @@ int run(int argc, char** argv)
                                {"stopping", budgetNote},
                                {"found", found},
                                {"pose_recovered", found && report.poseRecovered},
+                               {"degenerate", found && report.degenerate},
+                               {"rotation_only_fraction", report.rotationOnlyFraction},
+                               {"homography_fraction", report.homographyFraction},
                                {"inliers", report.inliers},
                                {"inlier_ratio", n > 0 ? double(report.inliers) / n : 0.0},
                                {"points_in_front", report.pointsInFront},
@@ -577,6 +592,7 @@ int run(int argc, char** argv)
     }
     std::printf("inliers: %d of %d (%.1f%%), %d in front of both cameras\n", report.inliers, n,
                 percent(report.inliers, n), report.pointsInFront);
+    if (!degenerateNote.empty()) std::printf("warning: %s\n", degenerateNote.c_str());
     std::printf("hypotheses: %d generated, %d converged, %d scored; %d iterations, "
                 "%d refinement iterations\n",
                 report.hypothesesGenerated, report.hypothesesConverged, report.hypothesesScored,

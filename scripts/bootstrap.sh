@@ -5,7 +5,8 @@
 set -euo pipefail
 
 packages=(cmake g++ make python3 libopencv-dev libeigen3-dev libgtest-dev libbenchmark-dev nlohmann-json3-dev
-    python3-matplotlib)
+    python3-matplotlib   # the experiments' plots (docs/EXPERIMENTS.md)
+    clang libclang-rt-14-dev) # clang and its sanitizer / libFuzzer runtimes: sanitize.sh, fuzz.sh
 
 missing=()
 for pkg in "${packages[@]}"; do

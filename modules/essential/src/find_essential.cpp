@@ -7,6 +7,7 @@
 
 #include "opencv2/essential.hpp"
 
+#include "geometry/degeneracy.hpp"
 #include "geometry/essential_decomposition.hpp"
 #include "pose/pose_recovery.hpp"
 #include "problem.hpp"
@@ -17,7 +18,10 @@
 
 #include <opencv2/calib3d.hpp>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstring>
 #include <vector>
 
 namespace cv {
@@ -127,6 +131,47 @@ double finishingReserveMs(int numPoints)
     return 0.05 + 0.0005 * numPoints;
 }
 
+/** EssentialReport::degenerate: an inlier counts as explained by a rotation alone (or by a
+homography) when its image-2 position is within this many Sampson thresholds of the rotated ray (or
+mapped point) of image 1: the same noise gives a transfer distance in one image of about twice the
+Sampson distance, which splits the error between both images. */
+constexpr double kRotationOnlyDistance = 2.0;
+
+/** ... and the estimate is degenerate when at least this fraction of its inliers is so explained.
+Measured (test/test_degenerate_scenes.cpp, 300 points, 0.5 px noise, 10 scenes each): pure rotation
+and baselines of 1e-4 give rotation-only fractions of 0.976 to 0.997 (the remainder is noise beyond
+twice the threshold), planes and single-depth scenes homography fractions of 0.968 to 1; a baseline
+of 0.05 gives at most 0.11 and 0.31, and 120 problems of the synthetic protocol at most 0.036 and
+0.093. */
+constexpr double kDegenerateFraction = 0.9;
+
+/** Five correspondences are a minimal set: an essential matrix fits any five exactly. */
+constexpr int kMinimalSample = 5;
+
+/** Whether the inliers hold more than `count` (<= kMinimalSample) distinct correspondences.
+Repeated correspondences add no constraint: five distinct points given twelve times each are fitted
+exactly by up to ten essential matrices, and 60 "inliers" of one of them are no evidence (the
+chance-support test counts points, not distinct ones). Stops at the first count + 1 distinct ones,
+so on ordinary data it looks at a handful of points. */
+bool moreDistinctInliersThan(const Problem& problem, const std::vector<uchar>& mask, int count)
+{
+    std::array<size_t, kMinimalSample + 1> distinct{};
+    int found = 0;
+    for (size_t i = 0; i < mask.size(); ++i) {
+        if (!mask[i]) continue;
+        bool repeated = false;
+        for (int k = 0; k < found && !repeated; ++k) {
+            const size_t j = distinct[static_cast<size_t>(k)];
+            repeated = problem.x1[i] == problem.x1[j] && problem.y1[i] == problem.y1[j] &&
+                       problem.x2[i] == problem.x2[j] && problem.y2[i] == problem.y2[j];
+        }
+        if (repeated) continue;
+        distinct[static_cast<size_t>(found++)] = i;
+        if (found > count) return true;
+    }
+    return false;
+}
+
 /** The pipeline shared by every overload. `problem` holds normalised points and threshold. */
 Mat estimate(const Problem& problem, const EssentialParams& params, OutputArray mask,
              EssentialReport* report, int64 start)
@@ -221,7 +266,7 @@ Mat estimate(const Problem& problem, const EssentialParams& params, OutputArray 
     }
     rep.inliers = ransac::inlierMask(E, problem, found.threshold, inliers.data());
     rep.timeRefineMs = msSince(tRefine);
-    if (rep.inliers < 5 ||
+    if (rep.inliers < 5 || !moreDistinctInliersThan(problem, inliers, kMinimalSample) ||
         !ransac::supportIsSignificant(E, problem, found.threshold, rep.inliers,
                                       solver->sampleSize(), std::max(1, found.hypothesesScored))) {
         std::fill(inliers.begin(), inliers.end(), uchar(0));
@@ -232,6 +277,16 @@ Mat estimate(const Problem& problem, const EssentialParams& params, OutputArray 
     }
     rep.success = true;
     rep.E = E;
+    if (report) {
+        rep.rotationOnlyFraction =
+            geometry::rotationOnlyFraction(problem.p1.data(), problem.p2.data(), inliers.data(), n,
+                                           kRotationOnlyDistance * found.threshold);
+        rep.homographyFraction =
+            geometry::homographyFraction(problem.p1.data(), problem.p2.data(), inliers.data(), n,
+                                         kRotationOnlyDistance * found.threshold);
+        rep.degenerate = rep.rotationOnlyFraction >= kDegenerateFraction ||
+                         rep.homographyFraction >= kDegenerateFraction;
+    }
 
     if (report && params.recoverPose) {
         const int64 tPose = getTickCount();
@@ -298,10 +353,23 @@ EssentialParams dropInParams(int method, double prob, double threshold, int maxI
 }
 
 /** The module's settings from a UsacParams (the mapping documented in essential.hpp). */
+/** An enum field of UsacParams as the int it holds. A value outside the enumeration (which a caller
+can make only by a cast) must be rejected with a message, but loading it as the enum type is
+undefined behaviour (UBSan's -fsanitize=enum reports it), so the bytes are read as an int. */
+template <typename Enum> int rawEnum(const Enum& field)
+{
+    static_assert(sizeof(Enum) == sizeof(int), "UsacParams enums are int-sized");
+    int value;
+    std::memcpy(&value, &field, sizeof value);
+    return value;
+}
+
 EssentialParams usacParams(const UsacParams& usac)
 {
     EssentialParams p;
-    switch (usac.score) {
+    const int score = rawEnum(usac.score), sampler = rawEnum(usac.sampler),
+              loMethod = rawEnum(usac.loMethod);
+    switch (score) {
     case SCORE_METHOD_RANSAC:
     case SCORE_METHOD_MSAC:
     case SCORE_METHOD_MAGSAC:
@@ -312,12 +380,12 @@ EssentialParams usacParams(const UsacParams& usac)
         break;
     default:
         CV_Error(Error::StsBadArg,
-                 "UsacParams::score " + std::to_string(int(usac.score)) + " is not a ScoreMethod");
+                 "UsacParams::score " + std::to_string(score) + " is not a ScoreMethod");
     }
-    switch (usac.sampler) {
+    switch (sampler) {
     case SAMPLING_UNIFORM:
     case SAMPLING_PROSAC:
-        p.sampler = usac.sampler;
+        p.sampler = sampler;
         break;
     case SAMPLING_NAPSAC:
         CV_Error(Error::StsNotImplemented,
@@ -328,10 +396,10 @@ EssentialParams usacParams(const UsacParams& usac)
                  "UsacParams::sampler SAMPLING_PROGRESSIVE_NAPSAC is not supported: use "
                  "SAMPLING_UNIFORM or SAMPLING_PROSAC");
     default:
-        CV_Error(Error::StsBadArg, "UsacParams::sampler " + std::to_string(int(usac.sampler)) +
-                                       " is not a SamplingMethod");
+        CV_Error(Error::StsBadArg,
+                 "UsacParams::sampler " + std::to_string(sampler) + " is not a SamplingMethod");
     }
-    switch (usac.loMethod) {
+    switch (loMethod) {
     case LOCAL_OPTIM_NULL:
         p.loIterations = 0;
         break;
@@ -350,8 +418,8 @@ EssentialParams usacParams(const UsacParams& usac)
         p.loSampleSize = usac.loSampleSize;
         break;
     default:
-        CV_Error(Error::StsBadArg, "UsacParams::loMethod " + std::to_string(int(usac.loMethod)) +
-                                       " is not a LocalOptimMethod");
+        CV_Error(Error::StsBadArg,
+                 "UsacParams::loMethod " + std::to_string(loMethod) + " is not a LocalOptimMethod");
     }
     // isParallel and neighborsSearch are ignored (see essential.hpp).
     checkConfidence(usac.confidence);
@@ -371,9 +439,12 @@ Mat estimateWithCamera(InputArray points1, InputArray points2, const Matx33d& K,
     std::vector<Point2d> p1 = readPoints(points1, "points1");
     std::vector<Point2d> p2 = readPoints(points2, "points2");
     checkPointSets(p1, p2, 5);
-    const double meanFocal = 0.5 * (std::abs(K(0, 0)) + std::abs(K(1, 1)));
+    const double meanFocal = 0.5 * (K(0, 0) + K(1, 1));
+    std::vector<Point2d> n1 = normalisePoints(p1, K), n2 = normalisePoints(p2, K);
+    checkNormalisedPoints(n1, "points1");
+    checkNormalisedPoints(n2, "points2");
     Problem problem =
-        makeProblem(normalisePoints(p1, K), normalisePoints(p2, K), params.threshold / meanFocal);
+        makeProblem(std::move(n1), std::move(n2), normalisedThreshold(params.threshold, meanFocal));
     return estimate(problem, params, mask, report, start);
 }
 
@@ -409,9 +480,12 @@ Mat estimateTwoCameras(InputArray points1, InputArray points2, InputArray camera
     std::vector<Point2d> n1, n2;
     undistortPoints(p1, n1, K1, distCoeffs1);
     undistortPoints(p2, n2, K2, distCoeffs2);
-    const double meanFocal =
-        0.25 * (std::abs(K1(0, 0)) + std::abs(K1(1, 1)) + std::abs(K2(0, 0)) + std::abs(K2(1, 1)));
-    Problem problem = makeProblem(std::move(n1), std::move(n2), params.threshold / meanFocal);
+    // Extreme distortion coefficients can send undistorted points to infinity or NaN.
+    checkNormalisedPoints(n1, "points1 (undistorted with distCoeffs1)");
+    checkNormalisedPoints(n2, "points2 (undistorted with distCoeffs2)");
+    const double meanFocal = 0.25 * (K1(0, 0) + K1(1, 1) + K2(0, 0) + K2(1, 1));
+    Problem problem =
+        makeProblem(std::move(n1), std::move(n2), normalisedThreshold(params.threshold, meanFocal));
     return estimate(problem, params, mask, nullptr, start);
 }
 

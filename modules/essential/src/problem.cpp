@@ -71,7 +71,11 @@ Matx33d readCameraMatrix(InputArray cameraMatrix, const char* name)
     Mat(m).convertTo(Mat(3, 3, CV_64F, K.val), CV_64F);
     for (int i = 0; i < 9; ++i)
         if (!std::isfinite(K.val[i])) badArg(arg + " has a non-finite entry");
-    if (K(0, 0) == 0.0 || K(1, 1) == 0.0) badArg(arg + " has a zero focal length (fx or fy)");
+    // A negative focal length mirrors the image: cv::findEssentialMat accepts it silently, but
+    // then the cheirality test and the pixel threshold mean something else; reject it.
+    if (!(K(0, 0) > 0.0) || !(K(1, 1) > 0.0))
+        badArg(arg + " must have positive focal lengths (got fx = " + std::to_string(K(0, 0)) +
+               ", fy = " + std::to_string(K(1, 1)) + ")");
     if (std::abs(K(2, 0)) > 1e-9 || std::abs(K(2, 1)) > 1e-9 || std::abs(K(2, 2) - 1.0) > 1e-9)
         badArg(arg + " must have a last row of 0 0 1");
     const double det = determinant(K);
@@ -81,7 +85,8 @@ Matx33d readCameraMatrix(InputArray cameraMatrix, const char* name)
 
 Matx33d cameraFromFocal(double focal, Point2d pp)
 {
-    if (!std::isfinite(focal) || focal == 0.0) badArg("focal must be finite and non-zero");
+    if (!std::isfinite(focal) || !(focal > 0.0))
+        badArg("focal must be finite and positive, got " + std::to_string(focal));
     if (!std::isfinite(pp.x) || !std::isfinite(pp.y)) badArg("pp must be finite");
     return Matx33d(focal, 0, pp.x, 0, focal, pp.y, 0, 0, 1);
 }
@@ -96,6 +101,27 @@ std::vector<Point2d> normalisePoints(const std::vector<Point2d>& pixels, const M
         out[i] = Point2d((pixels[i].x - cx - s * y) / fx, y);
     }
     return out;
+}
+
+void checkNormalisedPoints(const std::vector<Point2d>& normalised, const char* name)
+{
+    for (size_t i = 0; i < normalised.size(); ++i) {
+        const Point2d& p = normalised[i];
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !(std::abs(p.x) <= kMaxNormalised) ||
+            !(std::abs(p.y) <= kMaxNormalised))
+            badArg(std::string(name) + " at index " + std::to_string(i) +
+                   " is more than 1e8 focal lengths from the principal point (or not finite) "
+                   "once normalised by the camera matrix: no camera sees such a point");
+    }
+}
+
+double normalisedThreshold(double threshold, double meanFocal)
+{
+    const double t = threshold / meanFocal;
+    if (!(t > 0.0) || !std::isfinite(t))
+        badArg("threshold / focal length is not a positive finite number (threshold " +
+               std::to_string(threshold) + ", focal " + std::to_string(meanFocal) + ")");
+    return t;
 }
 
 Problem makeProblem(std::vector<Point2d> n1, std::vector<Point2d> n2, double threshold)

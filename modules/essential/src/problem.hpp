@@ -34,15 +34,29 @@ std::vector<Point2d> readPoints(InputArray points, const char* name);
 /** Checks that the two point sets have the same size and at least `minPoints` points. */
 void checkPointSets(const std::vector<Point2d>& p1, const std::vector<Point2d>& p2, int minPoints);
 
-/** Reads a 3 x 3 camera matrix (CV_32F or CV_64F, finite, fx and fy non-zero, last row 0 0 1,
+/** Reads a 3 x 3 camera matrix (CV_32F or CV_64F, finite, fx and fy positive, last row 0 0 1,
 invertible). */
 Matx33d readCameraMatrix(InputArray cameraMatrix, const char* name);
 
-/** The camera matrix of the focal/principal-point overloads; checks focal. */
+/** The camera matrix of the focal/principal-point overloads; checks focal (finite, positive). */
 Matx33d cameraFromFocal(double focal, Point2d pp);
 
 /** Pixel points to normalised coordinates with K^-1 (skew included). */
 std::vector<Point2d> normalisePoints(const std::vector<Point2d>& pixels, const Matx33d& K);
+
+/** Largest magnitude of a normalised coordinate: a point 1e8 focal lengths from the principal
+point is a ray within 1e-8 radians of the image plane. The bound keeps every product of the
+scoring (up to the fourth power of a coordinate in the Sampson distance) far from overflow; a
+pixel coordinate of 1e8 with a focal length of 500 (2e5 normalised) is well inside it. */
+constexpr double kMaxNormalised = 1e8;
+
+/** Checks normalised points (after K^-1 or undistortion): finite and within kMaxNormalised;
+throws naming `name` and the index otherwise. */
+void checkNormalisedPoints(const std::vector<Point2d>& normalised, const char* name);
+
+/** The pixel threshold in normalised units; throws if it is not positive and finite (a huge
+threshold with a tiny focal length, or the converse). */
+double normalisedThreshold(double threshold, double meanFocal);
 
 /** Builds the Problem from normalised points and a threshold already in normalised units. */
 Problem makeProblem(std::vector<Point2d> n1, std::vector<Point2d> n2, double threshold);

@@ -25,9 +25,14 @@ findEssentialMatIter() has every overload of `cv::findEssentialMat` (OpenCV 4.6)
 arguments, defaults, return value and mask, so renaming a call site is enough to switch.
 
 Differences from `cv::findEssentialMat` that a caller may notice:
-- invalid input (fewer than 5 points, non-finite coordinates, a singular camera matrix, prob outside
-  (0, 1), ...) raises cv::Exception naming the argument, where OpenCV may assert, crash or return
-  garbage;
+- invalid input (fewer than 5 points, non-finite coordinates, points more than 1e8 focal lengths
+  from the principal point, a singular camera matrix or one with a negative focal length, prob
+  outside (0, 1), ...) raises cv::Exception naming the argument, where OpenCV may assert, crash or
+  return garbage (the full table: docs/ROBUSTNESS.md);
+- data with no geometry (independent points, all points identical, fewer than six distinct
+  correspondences among the inliers) gives an empty E and an all-zero mask;
+- a scene that does not determine the pose (no parallax, or a plane) still gives E, and the
+  EssentialReport of the module's own overload says so (EssentialReport::degenerate);
 - `maxIters` keeps OpenCV's meaning of a confidence budget: an iterative solver that solves only a
   fraction s of outlier-free samples may draw maxIters / s samples (see EssentialParams::maxIters);
 - the returned E is refined on all points by IRLS (set EssentialParams::refine = false in the

@@ -64,6 +64,8 @@ int recoverPoseWithCamera(InputArray E, InputArray points1, InputArray points2, 
     const std::vector<uchar> maskIn = readMask(mask, n);
     const std::vector<Point2d> n1 = normalisePoints(p1, K);
     const std::vector<Point2d> n2 = normalisePoints(p2, K);
+    checkNormalisedPoints(n1, "points1");
+    checkNormalisedPoints(n2, "points2");
 
     std::vector<uchar> inFront(static_cast<size_t>(n), 0);
     pose::PoseResult result;

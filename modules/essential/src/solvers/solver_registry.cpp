@@ -7,6 +7,7 @@
 
 #include "opencv2/essential/solver.hpp"
 
+#include "solvers/checked_solver.hpp"
 #include "solvers/composite_solver.hpp"
 #include "solvers/gauss_newton.hpp"
 #include "solvers/levenberg_marquardt.hpp"
@@ -31,17 +32,28 @@ double EssentialSolver::hitProbability(double inlierRatio) const
 
 namespace {
 
+/** Largest sampleSize() and maxSolutions() a solver may declare: the engines allocate that much
+per estimate, and no essential-matrix solver needs more (the built-in ones: 10 and 10). */
+constexpr int kMaxSolverSize = 1000;
+
+struct Entry
+{
+    EssentialSolverFactory factory;
+    /** A user's factory (registerSolver()): its solvers are wrapped in a CheckedSolver. */
+    bool user = false;
+};
+
 struct Registry
 {
     std::mutex mutex;
-    std::map<std::string, EssentialSolverFactory> factories;
+    std::map<std::string, Entry> factories;
 
     Registry()
     {
-        factories["gn"] = [] { return makePtr<solvers::GaussNewtonSolver>(); };
-        factories["lm"] = [] { return makePtr<solvers::LevenbergMarquardtSolver>(); };
-        factories["nister"] = [] { return makePtr<solvers::NisterFivePointSolver>(); };
-        factories["robust"] = [] { return makePtr<solvers::RobustIrlsSolver>(); };
+        factories["gn"] = {[] { return makePtr<solvers::GaussNewtonSolver>(); }, false};
+        factories["lm"] = {[] { return makePtr<solvers::LevenbergMarquardtSolver>(); }, false};
+        factories["nister"] = {[] { return makePtr<solvers::NisterFivePointSolver>(); }, false};
+        factories["robust"] = {[] { return makePtr<solvers::RobustIrlsSolver>(); }, false};
     }
 };
 
@@ -63,7 +75,7 @@ void registerSolver(const std::string& name, const EssentialSolverFactory& facto
         CV_Error(Error::StsBadArg, "registerSolver: the factory of solver '" + name + "' is empty");
     Registry& r = registry();
     std::lock_guard<std::mutex> lock(r.mutex);
-    r.factories[name] = factory;
+    r.factories[name] = Entry{factory, true};
 }
 
 Ptr<EssentialSolver> createSolver(const std::string& name)
@@ -77,7 +89,7 @@ Ptr<EssentialSolver> createSolver(const std::string& name)
             parts.push_back(createSolver(part));
         return makePtr<solvers::CompositeSolver>(std::move(parts), std::move(weights));
     }
-    EssentialSolverFactory factory;
+    Entry entry;
     {
         Registry& r = registry();
         std::lock_guard<std::mutex> lock(r.mutex);
@@ -89,14 +101,24 @@ Ptr<EssentialSolver> createSolver(const std::string& name)
             CV_Error(Error::StsBadArg,
                      "createSolver: unknown solver '" + name + "' (registered: " + known + ")");
         }
-        factory = it->second;
+        entry = it->second;
     }
-    Ptr<EssentialSolver> solver = factory();
+    Ptr<EssentialSolver> solver =
+        solvers::callUserCode(name, "the factory", [&] { return entry.factory(); });
     if (!solver)
         CV_Error(Error::StsError, "createSolver: the factory of '" + name + "' returned null");
-    if (solver->sampleSize() < 5 || solver->maxSolutions() < 1)
-        CV_Error(Error::StsBadArg, "createSolver: solver '" + name +
-                                       "' must have sampleSize() >= 5 and maxSolutions() >= 1");
+    const int sampleSize =
+        solvers::callUserCode(name, "sampleSize()", [&] { return solver->sampleSize(); });
+    const int maxSolutions =
+        solvers::callUserCode(name, "maxSolutions()", [&] { return solver->maxSolutions(); });
+    if (sampleSize < 5 || maxSolutions < 1 || sampleSize > kMaxSolverSize ||
+        maxSolutions > kMaxSolverSize)
+        CV_Error(Error::StsBadArg,
+                 "createSolver: solver '" + name + "' must have sampleSize() in [5, " +
+                     std::to_string(kMaxSolverSize) + "] and maxSolutions() in [1, " +
+                     std::to_string(kMaxSolverSize) + "] (got " + std::to_string(sampleSize) +
+                     " and " + std::to_string(maxSolutions) + ")");
+    if (entry.user) return makePtr<solvers::CheckedSolver>(solver, name, sampleSize, maxSolutions);
     return solver;
 }
 

@@ -149,6 +149,20 @@ struct CV_EXPORTS EssentialReport
     bool poseRecovered = false;   //!< R and t were computed
     int pointsInFront = 0;        //!< inliers in front of both cameras for (R, t)
 
+    /** Fraction of the inliers that a rotation alone explains: their position in image 2 is
+    within twice the threshold of the rotated ray of image 1 (rotation fitted to all inliers).
+    Set when an essential matrix was found. */
+    double rotationOnlyFraction = 0;
+    /** Fraction of the inliers that a homography explains (fitted to all inliers by DLT; same
+    distance). Set when an essential matrix was found. */
+    double homographyFraction = 0;
+    /** The inliers do not determine the pose: rotationOnlyFraction >= 0.9 (no parallax: pure
+    rotation, a baseline too short for the scene's depth; every E = [t]x R with the right R fits,
+    so t is noise, R is still right) or homographyFraction >= 0.9 (a planar scene or all points at
+    one depth: two poses fit equally well and the estimate may be the wrong one). Treat the result
+    as a rotation, or a homography, not as a pose. See docs/ROBUSTNESS.md, "Degenerate scenes". */
+    bool degenerate = false;
+
     int numPoints = 0;           //!< correspondences given
     int inliers = 0;             //!< non-zero entries of the returned mask
     int iterations = 0;          //!< samples drawn (at most maxIters / solver success rate)

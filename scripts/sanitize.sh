@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# Builds the module, its tests, the CLIs and the libFuzzer target with clang, AddressSanitizer and
+# UndefinedBehaviorSanitizer in ${SANITIZE_BUILD_DIR:-build-sanitize}, then runs the ctest suite
+# there (every entry, or those matching the arguments, e.g. scripts/sanitize.sh -R BadInput).
+# Any sanitizer report stops the process with a non-zero status, so ctest counts it as a failure.
+# OpenCV itself is the uninstrumented system library; see docs/ROBUSTNESS.md for what that means.
+# Licensed under the Apache License, Version 2.0.
+set -euo pipefail
+
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+scripts/bootstrap.sh
+
+build_dir=${SANITIZE_BUILD_DIR:-build-sanitize}
+# -O1 keeps the instrumented suite fast enough while keeping useful stacks; fuzzer-no-link adds the
+# coverage hooks libFuzzer needs to the library, so the same tree serves scripts/fuzz.sh.
+sanitize_flags="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
+# CXXFLAGS and LDFLAGS (not only CMake options) so that the consumer project that the ctest entry
+# install_and_consume configures inherits them too.
+export CC=clang CXX=clang++
+export CXXFLAGS="-O1 -g ${sanitize_flags} -fsanitize=fuzzer-no-link"
+export LDFLAGS="${sanitize_flags}"
+export ASAN_OPTIONS="halt_on_error=1:abort_on_error=1:detect_leaks=1:strict_string_checks=1:detect_stack_use_after_return=1:check_initialization_order=1"
+export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1"
+
+if [[ ! -f "$build_dir/CMakeCache.txt" ]]; then
+    cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=Debug -DESSENTIAL_BUILD_FUZZ=ON \
+        -DESSENTIAL_BUILD_PERF=OFF -DESSENTIAL_BUILD_BENCH=OFF >/dev/null
+fi
+cmake --build "$build_dir" -j"${JOBS:-$(nproc)}"
+
+cd "$build_dir"
+exec ctest --output-on-failure "$@"

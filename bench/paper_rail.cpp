@@ -45,6 +45,7 @@ using essential_samples::isOption;
 using essential_samples::optionValue;
 using essential_samples::parseDouble;
 using essential_samples::parseInt;
+using essential_samples::parseSolverList;
 using essential_samples::Pose;
 using essential_samples::split;
 
@@ -156,14 +157,7 @@ Options parseOptions(int argc, char** argv)
             for (const std::string& v : o.variants)
                 parseVariant(v);
         } else if (arg == "--solvers") {
-            o.solvers = split(value, ',');
-            for (const std::string& s : o.solvers) {
-                try {
-                    cv::essential::createSolver(s);
-                } catch (const cv::Exception& e) {
-                    fail("--solvers: " + e.err, 2);
-                }
-            }
+            o.solvers = parseSolverList("--solvers", value);
         } else if (arg == "--budgets-ms") {
             o.budgets.clear();
             for (const std::string& part : split(value, ',')) {

@@ -10,6 +10,7 @@
 #define ESSENTIAL_SAMPLES_CLI_COMMON_HPP
 
 #include <opencv2/core.hpp>
+#include <opencv2/essential.hpp>
 
 #include <algorithm>
 #include <cerrno>
@@ -129,6 +130,21 @@ inline std::vector<std::string> split(const std::string& text, char separator)
         parts.push_back(part);
     if (!text.empty() && text.back() == separator) parts.emplace_back();
     return parts;
+}
+
+/** The value of an option listing solvers ("gn,nister,gn+nister"): each name must be one
+createSolver() accepts; fail(option + ": " + reason, 2) otherwise. */
+inline std::vector<std::string> parseSolverList(const std::string& option, const std::string& value)
+{
+    const std::vector<std::string> solvers = split(value, ',');
+    for (const std::string& solver : solvers) {
+        try {
+            cv::essential::createSolver(solver);
+        } catch (const cv::Exception& e) {
+            fail(option + ": " + e.err, 2);
+        }
+    }
+    return solvers;
 }
 
 /** The numbers of a text file, one row per line. Blank lines and lines starting with '#' are

@@ -41,6 +41,7 @@ using essential_samples::optionValue;
 using essential_samples::parseDouble;
 using essential_samples::parseInt;
 using essential_samples::parseSeed;
+using essential_samples::parseSolverList;
 using essential_samples::Pose;
 using essential_samples::readNumberRows;
 using essential_samples::rotationAngleDeg;
@@ -141,14 +142,7 @@ Options parseOptions(int argc, char** argv)
         if (arg == "--offsets") {
             options.offsets = parseOffsets(value);
         } else if (arg == "--solvers") {
-            options.solvers = split(value, ',');
-            for (const std::string& solver : options.solvers) {
-                try {
-                    cv::essential::createSolver(solver);
-                } catch (const cv::Exception& e) {
-                    fail("--solvers: " + e.err, 2);
-                }
-            }
+            options.solvers = parseSolverList("--solvers", value);
         } else if (arg == "--budgets-ms") {
             options.budgets.clear();
             for (const std::string& part : split(value, ',')) {

@@ -13,7 +13,8 @@
 # reached. A mismatched vtable or factory makes it crash, fail to link or return wrong results.
 #
 # Sets <result-var> to TRUE when the probe passed; otherwise FALSE, with a STATUS message saying
-# ENGINE_OPENCV is disabled and why. The option ESSENTIAL_WITH_OPENCV_LOOP=OFF disables the
+# ENGINE_OPENCV is disabled and why; with OpenCV 4.6.x, the version the declaration copies, a failed
+# probe stops the configure with FATAL_ERROR instead. The option ESSENTIAL_WITH_OPENCV_LOOP=OFF disables the
 # bridge without probing. The verdict is cached; a changed OpenCV version or directory, compiler,
 # declaration or probe re-probes by itself (re-run CMake after upgrading OpenCV).
 option(ESSENTIAL_WITH_OPENCV_LOOP
@@ -202,6 +203,13 @@ function(essential_probe_opencv_loop result_var)
     message(STATUS "opencv_essential: ENGINE_OPENCV enabled: OpenCV ${OpenCV_VERSION}'s exported "
                    "RANSAC/LMedS loops match the module's declaration${cached}")
     set(${result_var} TRUE PARENT_SCOPE)
+  elseif(OpenCV_VERSION VERSION_GREATER_EQUAL 4.6.0 AND OpenCV_VERSION VERSION_LESS 4.7.0)
+    # 4.6 is the version the declaration was written for and is tested against: a failed probe
+    # there is a broken build environment, not an expected limitation, so stop rather than build
+    # a module whose ENGINE_OPENCV tests would all be skipped.
+    message(FATAL_ERROR "opencv_essential: the probe of OpenCV ${OpenCV_VERSION}'s RANSAC loop "
+                        "failed${cached}: ${why}. It passes with Debian's OpenCV 4.6; configure "
+                        "with -DESSENTIAL_WITH_OPENCV_LOOP=OFF to build without ENGINE_OPENCV.")
   else()
     message(STATUS "opencv_essential: ENGINE_OPENCV disabled${cached}: ${why}")
   endif()

@@ -99,9 +99,13 @@ Mat solveExactlyFive(const Problem& problem, EssentialSolver& solver, RNG& rng,
                     E(i, j) = Eq(i, j);
             if (!E.allFinite() || !(E.norm() > 0)) continue;
             const Eigen::Matrix3d C = geometry::canonicalEssential(E);
+            // Compared up to sign: the canonical sign follows the largest entry, which is not a
+            // stable choice when two entries tie in magnitude with opposite signs (forward motion
+            // with no rotation gives E = [e_z]x, entries -1 and +1), so two copies of one root
+            // may come back as C and -C.
             bool seen = false;
             for (const Eigen::Matrix3d& F : found)
-                seen |= (C - F).norm() < kSameSolution;
+                seen |= std::min((C - F).norm(), (C + F).norm()) < kSameSolution;
             if (!seen && found.size() < 10) found.push_back(C);
         }
     }

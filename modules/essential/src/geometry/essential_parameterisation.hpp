@@ -11,6 +11,7 @@
 #ifndef OPENCV_ESSENTIAL_GEOMETRY_ESSENTIAL_PARAMETERISATION_HPP
 #define OPENCV_ESSENTIAL_GEOMETRY_ESSENTIAL_PARAMETERISATION_HPP
 
+#include "geometry/sampson.hpp"
 #include "geometry/so3.hpp"
 
 #include <Eigen/Core>
@@ -130,29 +131,17 @@ refinement's inner loop (refine/irls_refinement.cpp) spends most of its time her
 inline bool sampsonResidualAndJacobian(const EssentialDerivatives& d, double x1, double y1,
                                        double x2, double y2, double& s, double J[5])
 {
-    const Eigen::Matrix3d& E = d.E;
-    const double a = E(0, 0) * x1 + E(0, 1) * y1 + E(0, 2); // E q1
-    const double b = E(1, 0) * x1 + E(1, 1) * y1 + E(1, 2);
-    const double c = E(2, 0) * x1 + E(2, 1) * y1 + E(2, 2);
-    const double p = E(0, 0) * x2 + E(1, 0) * y2 + E(2, 0); // E^T q2
-    const double q = E(0, 1) * x2 + E(1, 1) * y2 + E(2, 1);
-    const double D = a * a + b * b + p * p + q * q;
-    if (!(D > 0.0)) return false;
-    const double r = x2 * a + y2 * b + c;
-    const double invSqrtD = 1.0 / std::sqrt(D);
-    s = r * invSqrtD;
-    const double k = s * invSqrtD; // r / D
-    const double alpha0 = x2 - k * a, alpha1 = y2 - k * b;
-    const double beta0 = k * p, beta1 = k * q;
-    // G = sqrt(D) ds/dE (G22 = 1).
-    const double G00 = alpha0 * x1 - x2 * beta0, G01 = alpha0 * y1 - x2 * beta1, G02 = alpha0;
-    const double G10 = alpha1 * x1 - y2 * beta0, G11 = alpha1 * y1 - y2 * beta1, G12 = alpha1;
-    const double G20 = x1 - beta0, G21 = y1 - beta1;
+    const SampsonTerms t = sampsonTerms(EssentialEntries(d.E), x1, y1, x2, y2);
+    if (!(t.D > 0.0)) return false;
+    const double invSqrtD = 1.0 / std::sqrt(t.D);
+    s = t.r * invSqrtD;
+    double G[8];
+    sampsonScaledGradient(t, s * invSqrtD, x1, y1, x2, y2, G);
     for (int m = 0; m < 5; ++m) {
         const Eigen::Matrix3d& dE = d.dE[m];
-        J[m] = invSqrtD *
-               (G00 * dE(0, 0) + G01 * dE(0, 1) + G02 * dE(0, 2) + G10 * dE(1, 0) + G11 * dE(1, 1) +
-                G12 * dE(1, 2) + G20 * dE(2, 0) + G21 * dE(2, 1) + dE(2, 2));
+        const double dEm[9] = {dE(0, 0), dE(0, 1), dE(0, 2), dE(1, 0), dE(1, 1),
+                               dE(1, 2), dE(2, 0), dE(2, 1), dE(2, 2)};
+        J[m] = invSqrtD * contractScaledGradient(G, dEm);
     }
     return true;
 }
@@ -165,19 +154,20 @@ inline bool epipolarDistancesAndJacobian(const EssentialDerivatives& d, double x
                                          double x2, double y2, double g[2], double J[2][5])
 {
     const Eigen::Vector3d q1(x1, y1, 1.0), q2(x2, y2, 1.0);
-    const Eigen::Vector3d Eq1 = d.E * q1, Etq2 = d.E.transpose() * q2;
-    const double D1 = Eq1.x() * Eq1.x() + Eq1.y() * Eq1.y();
-    const double D2 = Etq2.x() * Etq2.x() + Etq2.y() * Etq2.y();
+    // The Sampson terms split into the two images: D = D1 + D2.
+    const SampsonTerms t = sampsonTerms(EssentialEntries(d.E), x1, y1, x2, y2);
+    const double D1 = t.a * t.a + t.b * t.b;
+    const double D2 = t.p * t.p + t.q * t.q;
     if (!(D1 > 0.0) || !(D2 > 0.0)) return false;
-    const double r = q2.dot(Eq1);
+    const double r = t.r;
     const double s1 = 1.0 / std::sqrt(D1), s2 = 1.0 / std::sqrt(D2);
     g[0] = r * s1;
     g[1] = r * s2;
     for (int k = 0; k < 5; ++k) {
         const Eigen::Vector3d dEq1 = d.dE[k] * q1, dEtq2 = d.dE[k].transpose() * q2;
         const double dr = q2.dot(dEq1);
-        const double dD1 = 2.0 * (Eq1.x() * dEq1.x() + Eq1.y() * dEq1.y());
-        const double dD2 = 2.0 * (Etq2.x() * dEtq2.x() + Etq2.y() * dEtq2.y());
+        const double dD1 = 2.0 * (t.a * dEq1.x() + t.b * dEq1.y());
+        const double dD2 = 2.0 * (t.p * dEtq2.x() + t.q * dEtq2.y());
         J[0][k] = s1 * (dr - 0.5 * r * dD1 / D1);
         J[1][k] = s2 * (dr - 0.5 * r * dD2 / D2);
     }

@@ -2,6 +2,8 @@
 // See the LICENSE file at the top of the source tree.
 
 #include "ransac/msac_score.hpp"
+
+#include "geometry/sampson.hpp"
 #include "simd_dispatch.hpp"
 
 #include <algorithm>
@@ -12,25 +14,16 @@ namespace ransac {
 
 namespace {
 
-/** Squared Sampson distances of points [begin, end) written to err. A loop over plain arrays with
-the nine entries of E in registers: the compiler vectorises it (two doubles per SSE2 lane pair,
-four with AVX). A point on both epipoles gives 0/0 = NaN, which never passes the `<` tests below,
-so it counts as an outlier at full truncated cost. */
+/** Squared Sampson distances (geometry/sampson.hpp) of points [begin, end) written to err. A loop
+over plain arrays with the nine entries of E in registers: the compiler vectorises it (two doubles
+per SSE2 register, four with AVX). A point on both epipoles gives 0/0 = NaN, which never passes the
+`<` tests below, so it counts as an outlier at full truncated cost. */
 inline void sampsonBlock(const Matx33d& E, const double* x1, const double* y1, const double* x2,
                          const double* y2, int begin, int end, double* err)
 {
-    const double e00 = E(0, 0), e01 = E(0, 1), e02 = E(0, 2);
-    const double e10 = E(1, 0), e11 = E(1, 1), e12 = E(1, 2);
-    const double e20 = E(2, 0), e21 = E(2, 1), e22 = E(2, 2);
-    for (int i = begin; i < end; ++i) {
-        const double a = e00 * x1[i] + e01 * y1[i] + e02;
-        const double b = e10 * x1[i] + e11 * y1[i] + e12;
-        const double c = e20 * x1[i] + e21 * y1[i] + e22;
-        const double d = e00 * x2[i] + e10 * y2[i] + e20;
-        const double e = e01 * x2[i] + e11 * y2[i] + e21;
-        const double r = x2[i] * a + y2[i] * b + c;
-        err[i - begin] = r * r / (a * a + b * b + d * d + e * e);
-    }
+    const geometry::EssentialEntries e(E);
+    for (int i = begin; i < end; ++i)
+        err[i - begin] = geometry::sampsonSquared(e, x1[i], y1[i], x2[i], y2[i]);
 }
 
 /** Block length of the partial scoring: long enough to vectorise and amortise the early-exit test,

@@ -12,6 +12,8 @@
 #include "problem.hpp"
 #include "ransac/deadline.hpp"
 
+#include <algorithm>
+
 namespace cv {
 namespace essential {
 namespace ransac {
@@ -78,6 +80,16 @@ and no M given, M is chosen at run time from the measured cost of generating a h
 scoring a point, so that generation and scoring fit the time left. */
 SearchResult searchPreemptive(const Problem& problem, EssentialSolver& solver, RNG& rng,
                               const SearchSettings& settings);
+
+/** Nister's preemption function f(i) = floor(M 2^-floor(i / B)), at least 1: how many of the M
+hypotheses survive once i points have been scored, with blocks of B points. */
+inline int preemptiveSurvivors(int M, int64 pointsScored, int B)
+{
+    const int64 halvings = pointsScored / B;
+    // M < 2^31, so 31 halvings leave nothing; shifting by more would be undefined.
+    const int64 kept = halvings >= 31 ? 0 : (int64(M) >> halvings);
+    return static_cast<int>(std::max<int64>(1, kept));
+}
 
 /** The points of `problem` in a random order (for scoring on random subsets or in a random order).
  */

@@ -108,9 +108,7 @@ SearchResult searchPreemptive(const Problem& problem, EssentialSolver& solver, R
         for (int h : alive)
             cost[h] += scoreMsacRange(hypotheses[h], data, begin, end).cost;
         result.pointsScored += int64(end - begin) * int64(alive.size());
-        const int blocksDone = end / B;
-        const size_t keep =
-            std::max<size_t>(1, static_cast<size_t>(std::ldexp(double(M), -blocksDone)));
+        const size_t keep = static_cast<size_t>(preemptiveSurvivors(M, end, B));
         if (alive.size() > keep) {
             std::nth_element(alive.begin(), alive.begin() + static_cast<long>(keep), alive.end(),
                              [&](int a, int b) { return cost[a] < cost[b]; });

@@ -16,9 +16,14 @@ namespace ransac {
 
 namespace {
 
-/** Shifts used to build wrong pairs: co-prime-ish offsets so that a data set sorted in some order
-does not pair neighbours. 3 x N wrong pairs give the rate to about +-sqrt(p / 3N). */
-constexpr int kShifts[] = {1, 7, 31};
+/** Shifts used to build wrong pairs, as fractions of N: q1[i] is paired with q2[i + f N]. Fractions
+rather than small constant offsets because callers often pass correspondences sorted by image
+position (detectors that scan rows, grids) or by match quality: a small shift would pair each point
+with a neighbour in that order, which in a position-sorted set is nearly its true partner, and the
+rate would come out too high. 0.382 and 0.618 (golden-ratio offsets) and 0.5 keep every wrong pair
+at least a third of the data apart in the input order. 3 x N wrong pairs give the rate to about
++-sqrt(p / 3N). */
+constexpr double kShiftFractions[] = {0.382, 0.5, 0.618};
 
 /** Significance level of the test before the Bonferroni division by the number of hypotheses. */
 constexpr double kAlpha = 0.01;
@@ -49,8 +54,8 @@ double chanceInlierRate(const Matx33d& E, const Problem& problem, double thresho
             Em(i, j) = E(i, j);
     const double t2 = threshold * threshold;
     long hits = 0, pairs = 0;
-    for (int shift : kShifts) {
-        const int s = shift % n;
+    for (double fraction : kShiftFractions) {
+        const int s = static_cast<int>(fraction * n) % n;
         if (s == 0) continue;
         for (int i = 0; i < n; ++i) {
             const int j = (i + s) % n;

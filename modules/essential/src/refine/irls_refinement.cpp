@@ -5,6 +5,7 @@
 
 #include "geometry/essential_decomposition.hpp"
 #include "geometry/essential_parameterisation.hpp"
+#include "geometry/sampson.hpp"
 #include "simd_dispatch.hpp"
 
 #include <Eigen/Cholesky>
@@ -73,18 +74,12 @@ ESSENTIAL_AVX2_CLONES double evaluate(const Problem& p, const EssentialPose& pos
     const double* y2 = p.y2.data();
     const double invSigma2 = 1.0 / sigma2;
     LogSum logSum;
+    const geometry::EssentialEntries E(derivatives.E);
     if (!A) {
-        const Eigen::Matrix3d& E = derivatives.E;
         for (int i = 0; i < n; ++i) {
-            const double a = E(0, 0) * x1[i] + E(0, 1) * y1[i] + E(0, 2);
-            const double b = E(1, 0) * x1[i] + E(1, 1) * y1[i] + E(1, 2);
-            const double c = E(2, 0) * x1[i] + E(2, 1) * y1[i] + E(2, 2);
-            const double d = E(0, 0) * x2[i] + E(1, 0) * y2[i] + E(2, 0);
-            const double e = E(0, 1) * x2[i] + E(1, 1) * y2[i] + E(2, 1);
-            const double D = a * a + b * b + d * d + e * e;
-            if (!(D > 0.0)) continue;
-            const double r = x2[i] * a + y2[i] * b + c;
-            logSum.add(r * r / D * invSigma2);
+            const geometry::SampsonTerms t = geometry::sampsonTerms(E, x1[i], y1[i], x2[i], y2[i]);
+            if (!(t.D > 0.0)) continue;
+            logSum.add(geometry::sampsonSquared(t) * invSigma2);
         }
         return 0.5 * sigma2 * logSum.total();
     }
@@ -92,9 +87,6 @@ ESSENTIAL_AVX2_CLONES double evaluate(const Problem& p, const EssentialPose& pos
     // (a loop without reductions or branches, which the compiler vectorises), then the 15 distinct
     // entries of the symmetric A and the 5 of g summed in kLanes interleaved partial sums (vertical
     // adds the compiler vectorises too, without reassociating a scalar sum).
-    const Eigen::Matrix3d& E = derivatives.E;
-    const double e00 = E(0, 0), e01 = E(0, 1), e02 = E(0, 2), e10 = E(1, 0), e11 = E(1, 1);
-    const double e12 = E(1, 2), e20 = E(2, 0), e21 = E(2, 1), e22 = E(2, 2);
     double dE[5][9];
     for (int m = 0; m < 5; ++m)
         for (int r = 0; r < 3; ++r)
@@ -109,33 +101,19 @@ ESSENTIAL_AVX2_CLONES double evaluate(const Problem& p, const EssentialPose& pos
         const double* bx2 = x2 + begin;
         const double* by2 = y2 + begin;
         for (int i = 0; i < count; ++i) {
-            const double a = e00 * bx1[i] + e01 * by1[i] + e02; // E q1
-            const double b = e10 * bx1[i] + e11 * by1[i] + e12;
-            const double c = e20 * bx1[i] + e21 * by1[i] + e22;
-            const double p = e00 * bx2[i] + e10 * by2[i] + e20; // E^T q2
-            const double q = e01 * bx2[i] + e11 * by2[i] + e21;
-            const double D = a * a + b * b + p * p + q * q;
+            const geometry::SampsonTerms t =
+                geometry::sampsonTerms(E, bx1[i], by1[i], bx2[i], by2[i]);
             // A point with D = 0 gets zero residual, Jacobian and weight: it adds nothing.
-            const double valid = D > 0.0 ? 1.0 : 0.0;
-            const double invSqrtD = valid / std::sqrt(D + (1.0 - valid));
-            const double r = bx2[i] * a + by2[i] * b + c;
-            const double sv = r * invSqrtD;
-            const double k = sv * invSqrtD; // r / D
-            // G = sqrt(D) ds/dE (geometry::sampsonResidualAndJacobian), G22 = 1.
-            const double alpha0 = bx2[i] - k * a, alpha1 = by2[i] - k * b;
-            const double beta0 = k * p, beta1 = k * q;
-            const double G00 = alpha0 * bx1[i] - bx2[i] * beta0;
-            const double G01 = alpha0 * by1[i] - bx2[i] * beta1;
-            const double G10 = alpha1 * bx1[i] - by2[i] * beta0;
-            const double G11 = alpha1 * by1[i] - by2[i] * beta1;
-            const double G20 = bx1[i] - beta0, G21 = by1[i] - beta1;
+            const double valid = t.D > 0.0 ? 1.0 : 0.0;
+            const double invSqrtD = valid / std::sqrt(t.D + (1.0 - valid));
+            const double sv = t.r * invSqrtD;
+            double G[8];
+            geometry::sampsonScaledGradient(t, sv * invSqrtD, bx1[i], by1[i], bx2[i], by2[i], G);
             for (int m = 0; m < 5; ++m)
-                J[m][i] = invSqrtD * (G00 * dE[m][0] + G01 * dE[m][1] + alpha0 * dE[m][2] +
-                                      G10 * dE[m][3] + G11 * dE[m][4] + alpha1 * dE[m][5] +
-                                      G20 * dE[m][6] + G21 * dE[m][7] + dE[m][8]);
+                J[m][i] = invSqrtD * geometry::contractScaledGradient(G, dE[m]);
             const double u = sv * sv * invSigma2;
             S[i] = sv;
-            U[i] = D > 0.0 ? u : -1.0; // -1: no Sampson distance, not in the cost
+            U[i] = t.D > 0.0 ? u : -1.0; // -1: no Sampson distance, not in the cost
             W[i] = 1.0 / (1.0 + u);
         }
         for (int i = count; i < kBlock; ++i) { // pad the block to a multiple of kLanes

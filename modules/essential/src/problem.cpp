@@ -124,7 +124,8 @@ double normalisedThreshold(double threshold, double meanFocal)
     return t;
 }
 
-Problem makeProblem(std::vector<Point2d> n1, std::vector<Point2d> n2, double threshold)
+Problem makeProblem(std::vector<Point2d> n1, std::vector<Point2d> n2, double threshold,
+                    EssentialDistance distance)
 {
     Problem p;
     const size_t n = n1.size();
@@ -141,6 +142,7 @@ Problem makeProblem(std::vector<Point2d> n1, std::vector<Point2d> n2, double thr
     p.p1 = std::move(n1);
     p.p2 = std::move(n2);
     p.threshold = threshold;
+    p.distance = distance;
     return p;
 }
 

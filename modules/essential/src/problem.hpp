@@ -7,6 +7,8 @@
 #ifndef OPENCV_ESSENTIAL_PROBLEM_HPP
 #define OPENCV_ESSENTIAL_PROBLEM_HPP
 
+#include "opencv2/essential/params.hpp"
+
 #include <opencv2/core.hpp>
 
 #include <vector>
@@ -20,8 +22,10 @@ struct Problem
 {
     std::vector<double> x1, y1, x2, y2;
     std::vector<Point2d> p1, p2;
-    /** Inlier threshold on the Sampson distance, in normalised units. */
+    /** Inlier threshold on `distance`, in normalised units. */
     double threshold = 0.0;
+    /** The distance scoring, SPRT, masks and the support test compare with the threshold. */
+    EssentialDistance distance = DISTANCE_SAMPSON;
 
     int size() const { return static_cast<int>(x1.size()); }
 };
@@ -58,8 +62,10 @@ void checkNormalisedPoints(const std::vector<Point2d>& normalised, const char* n
 threshold with a tiny focal length, or the converse). */
 double normalisedThreshold(double threshold, double meanFocal);
 
-/** Builds the Problem from normalised points and a threshold already in normalised units. */
-Problem makeProblem(std::vector<Point2d> n1, std::vector<Point2d> n2, double threshold);
+/** Builds the Problem from normalised points and a threshold already in normalised units, on the
+given inlier distance. */
+Problem makeProblem(std::vector<Point2d> n1, std::vector<Point2d> n2, double threshold,
+                    EssentialDistance distance = DISTANCE_SAMPSON);
 
 /** Argument checks shared by every overload; messages name the argument. */
 void checkConfidence(double prob);

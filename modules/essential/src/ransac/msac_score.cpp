@@ -4,6 +4,7 @@
 #include "ransac/msac_score.hpp"
 
 #include "geometry/sampson.hpp"
+#include "geometry/symmetric_epipolar.hpp"
 #include "simd_dispatch.hpp"
 
 #include <algorithm>
@@ -14,16 +15,26 @@ namespace ransac {
 
 namespace {
 
-/** Squared Sampson distances (geometry/sampson.hpp) of points [begin, end) written to err. A loop
-over plain arrays with the nine entries of E in registers: the compiler vectorises it (two doubles
-per SSE2 register, four with AVX). A point on both epipoles gives 0/0 = NaN, which never passes the
-`<` tests below, so it counts as an outlier at full truncated cost. */
-inline void sampsonBlock(const Matx33d& E, const double* x1, const double* y1, const double* x2,
-                         const double* y2, int begin, int end, double* err)
+/** Squared inlier distances of points [begin, end) written to err: the Sampson distance
+(geometry/sampson.hpp) or the symmetric epipolar distance (geometry/symmetric_epipolar.hpp), as the
+problem says. The choice is made once per block, outside the loops; each loop runs over plain
+arrays with the nine entries of E in registers, and the compiler vectorises it (two doubles per
+SSE2 register, four with AVX). A point on the epipoles gives NaN or +inf, which never passes the
+`<=` tests below, so it counts as an outlier at full truncated cost. */
+inline void distanceBlock(const Matx33d& E, const Problem& problem, int begin, int end, double* err)
 {
     const geometry::EssentialEntries e(E);
-    for (int i = begin; i < end; ++i)
-        err[i - begin] = geometry::sampsonSquared(e, x1[i], y1[i], x2[i], y2[i]);
+    const double* x1 = problem.x1.data();
+    const double* y1 = problem.y1.data();
+    const double* x2 = problem.x2.data();
+    const double* y2 = problem.y2.data();
+    if (problem.distance == DISTANCE_SYMMETRIC_EPIPOLAR) {
+        for (int i = begin; i < end; ++i)
+            err[i - begin] = geometry::symmetricEpipolarSquared(e, x1[i], y1[i], x2[i], y2[i]);
+    } else {
+        for (int i = begin; i < end; ++i)
+            err[i - begin] = geometry::sampsonSquared(e, x1[i], y1[i], x2[i], y2[i]);
+    }
 }
 
 /** Block length of the partial scoring: long enough to vectorise and amortise the early-exit test,
@@ -46,8 +57,7 @@ ESSENTIAL_AVX2_CLONES Score scoreMsacRange(const Matx33d& E, const Problem& prob
     double err[kBlock];
     for (int begin = first; begin < last; begin += kBlock) {
         const int end = std::min(last, begin + kBlock);
-        sampsonBlock(E, problem.x1.data(), problem.y1.data(), problem.x2.data(), problem.y2.data(),
-                     begin, end, err);
+        distanceBlock(E, problem, begin, end, err);
         double cost = 0.0;
         int inliers = 0;
         for (int i = 0; i < end - begin; ++i) {
@@ -79,8 +89,7 @@ ESSENTIAL_AVX2_CLONES Score scoreMsacSprt(const Matx33d& E, const Problem& probl
     double err[kSprtBlock];
     for (int begin = 0; begin < n; begin += kSprtBlock) {
         const int end = std::min(n, begin + kSprtBlock);
-        sampsonBlock(E, problem.x1.data(), problem.y1.data(), problem.x2.data(), problem.y2.data(),
-                     begin, end, err);
+        distanceBlock(E, problem, begin, end, err);
         for (int i = 0; i < end - begin; ++i) {
             const bool in = err[i] <= t2;
             s.cost += in ? err[i] : t2;
@@ -100,8 +109,16 @@ ESSENTIAL_AVX2_CLONES Score scoreMsacSprt(const Matx33d& E, const Problem& probl
 
 ESSENTIAL_AVX2_CLONES void sampsonErrors(const Matx33d& E, const Problem& problem, double* errors)
 {
-    sampsonBlock(E, problem.x1.data(), problem.y1.data(), problem.x2.data(), problem.y2.data(), 0,
-                 problem.size(), errors);
+    const geometry::EssentialEntries e(E);
+    for (int i = 0; i < problem.size(); ++i)
+        errors[i] =
+            geometry::sampsonSquared(e, problem.x1[i], problem.y1[i], problem.x2[i], problem.y2[i]);
+}
+
+ESSENTIAL_AVX2_CLONES void squaredDistances(const Matx33d& E, const Problem& problem,
+                                            double* errors)
+{
+    distanceBlock(E, problem, 0, problem.size(), errors);
 }
 
 ESSENTIAL_AVX2_CLONES int inlierMask(const Matx33d& E, const Problem& problem, double threshold,
@@ -113,8 +130,7 @@ ESSENTIAL_AVX2_CLONES int inlierMask(const Matx33d& E, const Problem& problem, d
     int count = 0;
     for (int begin = 0; begin < n; begin += kBlock) {
         const int end = std::min(n, begin + kBlock);
-        sampsonBlock(E, problem.x1.data(), problem.y1.data(), problem.x2.data(), problem.y2.data(),
-                     begin, end, err);
+        distanceBlock(E, problem, begin, end, err);
         for (int i = 0; i < end - begin; ++i) {
             const bool in = err[i] <= t2;
             mask[begin + i] = in ? 1 : 0;

@@ -1,8 +1,9 @@
 // This file is part of opencv_essential, licensed under the Apache License, Version 2.0.
 // See the LICENSE file at the top of the source tree.
 
-// MSAC scoring: the sum over all points of the squared Sampson distance truncated at the squared
-// threshold (Torr and Zisserman). Lower is better; an inlier is a point under the threshold.
+// MSAC scoring: the sum over all points of the squared inlier distance (the problem's: Sampson or
+// symmetric epipolar) truncated at the squared threshold (Torr and Zisserman). Lower is better; an
+// inlier is a point under the threshold.
 
 #ifndef OPENCV_ESSENTIAL_RANSAC_MSAC_SCORE_HPP
 #define OPENCV_ESSENTIAL_RANSAC_MSAC_SCORE_HPP
@@ -18,9 +19,9 @@ namespace ransac {
 
 struct Score
 {
-    double cost = HUGE_VAL; //!< truncated sum of squared Sampson distances
-    int inliers = 0; //!< points with squared Sampson distance at most threshold^2 (as OpenCV)
-    int scored = 0;  //!< points whose distance was computed (fewer than N after an early exit)
+    double cost = HUGE_VAL; //!< truncated sum of squared inlier distances
+    int inliers = 0;        //!< points with squared distance at most threshold^2 (as OpenCV)
+    int scored = 0; //!< points whose distance was computed (fewer than N after an early exit)
 };
 
 /** Scores E on all points. Gives up (returning a cost >= bestCost) as soon as the partial cost
@@ -39,11 +40,15 @@ inliers among them). The MSAC early exit at bestCost applies as well (checked ev
 Score scoreMsacSprt(const Matx33d& E, const Problem& problem, double bestCost, const SprtTest& test,
                     bool& rejected);
 
-/** Squared Sampson distance of every point to E (for LMedS and masks). */
+/** Squared Sampson distance of every point to E, whatever the problem's inlier distance (LMedS
+ranks by it, as OpenCV's LMEDS does). */
 void sampsonErrors(const Matx33d& E, const Problem& problem, double* errors);
 
-/** Writes mask[i] = 1 for the points whose Sampson distance is at most the threshold, 0 otherwise;
-returns the number of inliers. */
+/** Squared inlier distance (the problem's) of every point to E. */
+void squaredDistances(const Matx33d& E, const Problem& problem, double* errors);
+
+/** Writes mask[i] = 1 for the points whose inlier distance (the problem's) is at most the
+threshold, 0 otherwise; returns the number of inliers. */
 int inlierMask(const Matx33d& E, const Problem& problem, double threshold, uchar* mask);
 
 } // namespace ransac

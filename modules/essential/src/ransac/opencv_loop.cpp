@@ -115,8 +115,9 @@ public:
         return kept;
     }
 
-    /** Squared Sampson distance of every point (CV_32F, N x 1): OpenCV's RANSAC compares it with
-    threshold^2, its LMedS takes the median. Non-finite values become FLT_MAX (an outlier for both;
+    /** Squared inlier distance (the problem's; always Sampson with LMEDS, see find_essential.cpp)
+    of every point (CV_32F, N x 1): OpenCV's RANSAC compares it with threshold^2, its LMedS takes
+    the median. Non-finite values become FLT_MAX (an outlier for both;
     the LMedS loop sorts the floats as integers, which needs non-negative, non-NaN values). */
     void computeError(InputArray m1, InputArray m2, InputArray model,
                       OutputArray err) const override
@@ -125,14 +126,14 @@ public:
         const Mat a = m1.getMat();
         const int n = a.checkVector(2);
         if (a.data == reinterpret_cast<const uchar*>(problem_.p1.data()) && n == problem_.size()) {
-            sampsonErrors(E, problem_, errors_.data());
+            squaredDistances(E, problem_, errors_.data());
         } else {
             // Data other than the problem's arrays (not done by OpenCV 4.6's loops): read them.
             readSample(m1, x1_);
             readSample(m2, x2_);
-            Problem other = makeProblem(x1_, x2_, problem_.threshold);
+            Problem other = makeProblem(x1_, x2_, problem_.threshold, problem_.distance);
             errors_.resize(static_cast<size_t>(other.size()));
-            sampsonErrors(E, other, errors_.data());
+            squaredDistances(E, other, errors_.data());
         }
         const int count = static_cast<int>(errors_.size());
         err.create(count, 1, CV_32F);

@@ -152,7 +152,8 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
             a[i] = problem.p1[chosen[i]];
             b[i] = problem.p2[chosen[i]];
         }
-        const Problem subset = makeProblem(std::move(a), std::move(b), problem.threshold);
+        const Problem subset =
+            makeProblem(std::move(a), std::move(b), problem.threshold, problem.distance);
         refine::IrlsSettings irls;
         irls.maxIterations = settings.loIterations;
         ++result.localOptimisations;

@@ -41,7 +41,7 @@ Problem shuffledCopy(const Problem& problem, RNG& rng)
         p1[i] = problem.p1[order[i]];
         p2[i] = problem.p2[order[i]];
     }
-    return makeProblem(std::move(p1), std::move(p2), problem.threshold);
+    return makeProblem(std::move(p1), std::move(p2), problem.threshold, problem.distance);
 }
 
 SearchResult searchPreemptive(const Problem& problem, EssentialSolver& solver, RNG& rng,

@@ -4,8 +4,7 @@
 #include "ransac/support_test.hpp"
 
 #include "geometry/sampson.hpp"
-
-#include <Eigen/Core>
+#include "geometry/symmetric_epipolar.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -48,10 +47,8 @@ double chanceInlierRate(const Matx33d& E, const Problem& problem, double thresho
 {
     const int n = problem.size();
     if (n < 2) return 0.0;
-    Eigen::Matrix3d Em;
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j)
-            Em(i, j) = E(i, j);
+    const geometry::EssentialEntries e(E);
+    const bool symmetric = problem.distance == DISTANCE_SYMMETRIC_EPIPOLAR;
     const double t2 = threshold * threshold;
     long hits = 0, pairs = 0;
     for (double fraction : kShiftFractions) {
@@ -59,8 +56,12 @@ double chanceInlierRate(const Matx33d& E, const Problem& problem, double thresho
         if (s == 0) continue;
         for (int i = 0; i < n; ++i) {
             const int j = (i + s) % n;
-            hits += geometry::sampsonSquared(Em, problem.x1[i], problem.y1[i], problem.x2[j],
-                                             problem.y2[j]) <= t2;
+            // The wrong pair is judged by the same distance as the inliers it is compared with.
+            const geometry::SampsonTerms terms = geometry::sampsonTerms(
+                e, problem.x1[i], problem.y1[i], problem.x2[j], problem.y2[j]);
+            const double d2 = symmetric ? geometry::symmetricEpipolarSquared(terms)
+                                        : geometry::sampsonSquared(terms);
+            hits += d2 <= t2;
             ++pairs;
         }
     }

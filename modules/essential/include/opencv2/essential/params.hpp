@@ -29,6 +29,19 @@ enum EssentialEngine {
     ENGINE_PREEMPTIVE = 2
 };
 
+/** The distance of a correspondence to E that decides whether it is an inlier (compared with the
+threshold, both in normalised units). */
+enum EssentialDistance {
+    /** The Sampson distance r / sqrt(|(E q1)_xy|^2 + |(E^T q2)_xy|^2), r = q2^T E q1: the
+    first-order reprojection error, what cv::findEssentialMat thresholds with RANSAC and LMEDS. */
+    DISTANCE_SAMPSON = 0,
+    /** The symmetric epipolar distance sqrt(d1^2 + d2^2), d1 and d2 the distances of each point to
+    its epipolar line: what OpenCV 4.6's USAC thresholds for essential matrices (every USAC_* flag
+    and the UsacParams form). It is at least twice the Sampson distance, so the same threshold
+    admits fewer inliers. */
+    DISTANCE_SYMMETRIC_EPIPOLAR = 1
+};
+
 /** True when this build can run solvers inside OpenCV's own RANSAC loop (ENGINE_OPENCV). */
 CV_EXPORTS bool isOpenCvLoopAvailable();
 
@@ -70,9 +83,16 @@ struct CV_EXPORTS EssentialParams
     /** Required probability, in (0, 1), that at least one sample was outlier-free and solved. */
     double confidence = 0.999;
 
-    /** Inlier threshold in pixels on the Sampson distance, with pixels converted to normalised
-    units by the mean focal length (fx + fy) / 2, exactly as `cv::findEssentialMat`. Must be > 0. */
+    /** Inlier threshold in pixels on `distance`, with pixels converted to normalised units by the
+    mean focal length (fx + fy) / 2, exactly as `cv::findEssentialMat`. Must be > 0. */
     double threshold = 1.0;
+
+    /** The distance `threshold` applies to: DISTANCE_SAMPSON (default, as cv::findEssentialMat with
+    RANSAC or LMEDS) or DISTANCE_SYMMETRIC_EPIPOLAR (as OpenCV's USAC; the drop-in overloads select
+    it for the USAC flags and the UsacParams form). Scoring, SPRT, local optimisation's inlier sets,
+    the support test and the mask use it; LMEDS and the final refinement's robust cost always use
+    the Sampson distance. */
+    EssentialDistance distance = DISTANCE_SAMPSON;
 
     /** Iteration cap in OpenCV's units. Must be > 0. OpenCV's cap counts samples of a direct
     5-point solver, each of which solves an outlier-free sample; an iterative solver that reaches

@@ -185,16 +185,21 @@ Decomposes E by SVD into its two rotations and the translation direction, and ch
 (R, +-t) candidates the one that puts the most correspondences in front of both cameras. Unlike
 OpenCV 4.6, which ignores points farther than 50 baselines (so that in a deep scene seen from a
 short baseline no point counts and the sign of t is arbitrary), every point with positive depth in
-both views counts.
+both views counts. To get OpenCV's cut, call the distanceThresh overload with 50.
 
-@param E essential matrix, 3 x 3.
-@param points1 points of the first image (layouts as findEssentialMatIter()).
+@param E essential matrix: 3 x 3, or its nine entries in one continuous array (1 x 9, 9 x 1), as
+OpenCV reads it; CV_32F or CV_64F (OpenCV 4.6 fails on CV_32F).
+@param points1 points of the first image, as cv::recoverPose reads them: a vector of 2D points, an
+N x 2 one-channel or N x 1 / 1 x N two-channel matrix of any depth, views included, both arrays
+with the same number of channels.
 @param points2 points of the second image.
 @param cameraMatrix 3 x 3 intrinsic matrix.
-@param R output 3 x 3 CV_64F rotation from view 1 to view 2.
-@param t output 3 x 1 CV_64F unit translation.
-@param mask in/out: if given, only its non-zero points are used, and on return it marks the points
-used that lie in front of both cameras for the chosen pose.
+@param R output 3 x 3 CV_64F rotation from view 1 to view 2 (may be noArray()).
+@param t output 3 x 1 CV_64F unit translation (may be noArray()).
+@param mask in/out: if given (a continuous CV_8U vector, one entry per point), only its non-zero
+points are used; on return it is N x 1 CV_8U and keeps its value at the points used that lie in
+front of both cameras for the chosen pose, 0 elsewhere; if empty, it is created with 255 at those
+points.
 @return the number of (masked) points in front of both cameras.
 */
 CV_EXPORTS int recoverPose(InputArray E, InputArray points1, InputArray points2,
@@ -204,6 +209,57 @@ CV_EXPORTS int recoverPose(InputArray E, InputArray points1, InputArray points2,
 /** @overload The camera matrix is [focal 0 pp.x; 0 focal pp.y; 0 0 1]. */
 CV_EXPORTS int recoverPose(InputArray E, InputArray points1, InputArray points2, OutputArray R,
                            OutputArray t, double focal = 1.0, Point2d pp = Point2d(0, 0),
+                           InputOutputArray mask = noArray());
+
+/** @overload With OpenCV's distance cut and the triangulated points.
+
+The caller's distanceThresh is honoured: as `cv::recoverPose`, a point counts for a pose when its
+linear (DLT) triangulation, the method of `cv::triangulatePoints`, has positive depth below
+distanceThresh (in units of the baseline, |t| = 1) in both views. OpenCV's other overloads use
+distanceThresh = 50; the module's do not cut at all. This form costs a 4 x 4 SVD per point and
+candidate pose, as OpenCV's does.
+
+@param distanceThresh > 0; +inf keeps OpenCV's DLT test without a cut. NaN or <= 0 raise
+StsBadArg (OpenCV then counts no point).
+@param triangulatedPoints output 4 x N CV_64F homogeneous points of the chosen pose, in the first
+camera's frame (X2 = R X1 + t): each column the DLT solution of unit norm, with W >= 0 (OpenCV's
+columns are also of unit norm, with the sign its SVD gives).
+*/
+CV_EXPORTS int recoverPose(InputArray E, InputArray points1, InputArray points2,
+                           InputArray cameraMatrix, OutputArray R, OutputArray t,
+                           double distanceThresh, InputOutputArray mask = noArray(),
+                           OutputArray triangulatedPoints = noArray());
+
+/** @overload Estimates E from two cameras with distortion, then recovers the pose.
+
+As `cv::recoverPose`: the points are undistorted with their own camera (and read as
+cv::undistortPoints reads them: CV_32F or CV_64F, N x 2, 2 x N, N x 1 or 1 x N, continuous), E is
+estimated as by the two-camera findEssentialMatIter() with the same method, prob and threshold,
+its inlier mask written into `mask` (if given), and the pose recovered from the points that mask
+marks (all points when no mask is given). Unlike OpenCV, there is no 50-baseline cut; when no
+essential matrix is found the call returns 0 with E empty, R = I and t = 0 (OpenCV asserts); with
+exactly five points, of the several solutions the one with the most points in front is kept
+(OpenCV asserts).
+
+@param points1 points of the first image.
+@param points2 points of the second image.
+@param cameraMatrix1 camera matrix of the first view.
+@param distCoeffs1 its distortion coefficients (4, 5, 8, 12 or 14, or empty).
+@param cameraMatrix2 camera matrix of the second view.
+@param distCoeffs2 its distortion coefficients.
+@param E output 3 x 3 CV_64F essential matrix.
+@param R output rotation, as above.
+@param t output unit translation, as above.
+@param method RANSAC, LMEDS or a USAC flag, as findEssentialMatIter().
+@param prob confidence in (0, 1).
+@param threshold inlier threshold in pixels (converted with the mean focal length of the cameras).
+@param mask output N x 1 CV_8U: 1 at the inliers of E in front of both cameras, 0 elsewhere.
+@return the number of (masked) points in front of both cameras.
+*/
+CV_EXPORTS int recoverPose(InputArray points1, InputArray points2, InputArray cameraMatrix1,
+                           InputArray distCoeffs1, InputArray cameraMatrix2, InputArray distCoeffs2,
+                           OutputArray E, OutputArray R, OutputArray t, int method = cv::RANSAC,
+                           double prob = 0.999, double threshold = 1.0,
                            InputOutputArray mask = noArray());
 
 //! @}

@@ -9,6 +9,7 @@
 // and the module's (which have no cut) must agree exactly. The distanceThresh form is then checked
 // where the cut matters.
 
+#include "drop_in_layouts.hpp"
 #include "opencv2/essential.hpp"
 #include "synthetic_scene.hpp"
 
@@ -21,7 +22,10 @@
 
 namespace {
 
+using essential_test::kLayouts;
+using essential_test::Layout;
 using essential_test::makeScene;
+using essential_test::PointArray;
 using essential_test::rotationErrorDeg;
 using essential_test::SceneConfig;
 using essential_test::SyntheticScene;
@@ -57,92 +61,6 @@ between the two smallest singular values (measured: at most 1.7e-14 noise-free, 
 0.5 px noise in DistanceThreshAsOpenCV). Another triangulation method would differ by the noise,
 about 1e-3. */
 constexpr double kSamePoint = 1e-9;
-
-// ---------------------------------------------------------------------------------------------
-// Point layouts (those cv::recoverPose reads from E, those its two-camera form reads, and some it
-// rejects).
-
-struct PointArray
-{
-    std::vector<cv::Point2f> v2f;
-    std::vector<cv::Point2d> v2d;
-    std::vector<cv::Point> v2i;
-    cv::Mat m;
-    int kind = 0; // 0 Mat, 1 vector<Point2f>, 2 vector<Point2d>, 3 vector<Point>
-
-    cv::_InputArray arr() const
-    {
-        if (kind == 1) return cv::_InputArray(v2f);
-        if (kind == 2) return cv::_InputArray(v2d);
-        if (kind == 3) return cv::_InputArray(v2i);
-        return cv::_InputArray(m);
-    }
-};
-
-cv::Mat nx2(const std::vector<cv::Point2d>& p)
-{
-    return cv::Mat(p, true).reshape(1, static_cast<int>(p.size()));
-}
-
-PointArray makeLayout(int which, const std::vector<cv::Point2d>& p)
-{
-    PointArray a;
-    const int n = static_cast<int>(p.size());
-    switch (which) {
-    case 0:
-        a.kind = 2;
-        a.v2d = p;
-        break;
-    case 1:
-        a.kind = 1;
-        a.v2f.assign(p.begin(), p.end());
-        break;
-    case 2:
-        a.kind = 3;
-        for (const cv::Point2d& q : p)
-            a.v2i.emplace_back(cvRound(q.x), cvRound(q.y));
-        break;
-    case 3:
-        nx2(p).convertTo(a.m, CV_32F);
-        break;
-    case 4:
-        a.m = cv::Mat(p, true).reshape(2, 1); // 1 x N two-channel
-        break;
-    case 5:
-        a.m = nx2(p).t(); // 2 x N
-        break;
-    case 6: {
-        cv::Mat wide(n, 3, CV_64F, cv::Scalar(1));
-        nx2(p).copyTo(wide.colRange(0, 2));
-        a.m = wide.colRange(0, 2); // N x 2 view, not continuous
-        break;
-    }
-    case 7: {
-        cv::Mat wide(2, n + 3, CV_64F, cv::Scalar(0));
-        cv::Mat(nx2(p).t()).copyTo(wide.colRange(0, n));
-        a.m = wide.colRange(0, n); // 2 x N view
-        break;
-    }
-    default: {
-        cv::Mat wide(n, 3, CV_64F, cv::Scalar(1));
-        nx2(p).copyTo(wide.colRange(0, 2));
-        a.m = wide; // N x 3 homogeneous
-        break;
-    }
-    }
-    return a;
-}
-
-const char* const kLayoutNames[] = {"vector<Point2d>",
-                                    "vector<Point2f>",
-                                    "vector<Point> (int)",
-                                    "N x 2 CV_32F",
-                                    "1 x N CV_64FC2",
-                                    "2 x N CV_64F",
-                                    "view: colRange(0, 2) of N x 3",
-                                    "view: 2 x N of a wider matrix",
-                                    "N x 3 CV_64F (homogeneous)"};
-constexpr int kLayoutCount = 9;
 
 // ---------------------------------------------------------------------------------------------
 // Mask forms (an input and output of recoverPose).
@@ -374,15 +292,17 @@ TEST_P(DropInRecoverPose, AcceptRejectAndOutputsAsOpenCV)
                                          ? std::vector<int>{cv::RANSAC, cv::USAC_DEFAULT, cv::LMEDS}
                                          : std::vector<int>{cv::RANSAC};
     int compared = 0, accepted = 0;
-    for (int layout = 0; layout < kLayoutCount; ++layout) {
-        const PointArray a = makeLayout(layout, scene().px1), b = makeLayout(layout, scene().px2);
+    for (const Layout& layout : kLayouts) {
+        const PointArray a = layout.make(scene().px1), b = layout.make(scene().px2);
         for (const int method : methods)
             for (const MaskKind maskKind : kMaskKinds) {
                 // OpenCV's LMEDS costs 55 ms a call here (134 samples of its five-point solver):
                 // one layout and one mask form.
-                if (method == cv::LMEDS && (layout > 0 || maskKind != MaskKind::EmptyMat)) continue;
-                SCOPED_TRACE(std::string(kLayoutNames[layout]) + ", " + maskName(maskKind) +
-                             ", method " + std::to_string(method));
+                if (method == cv::LMEDS &&
+                    (&layout != &kLayouts[0] || maskKind != MaskKind::EmptyMat))
+                    continue;
+                SCOPED_TRACE(std::string(layout.name) + ", " + maskName(maskKind) + ", method " +
+                             std::to_string(method));
                 const Outcome cv = run(false, o, E, a, b, maskKind, method);
                 const Outcome us = run(true, o, E, a, b, maskKind, method);
                 ++compared;
@@ -423,7 +343,7 @@ TEST(DropInRecoverPose, EssentialMatrixFormsAsOpenCV)
         {"6 x 3 stack", stacked},     {"3 x 3 CV_32S", Eint},
         {"9 x 1 view", wide.col(0)},
     };
-    const PointArray a = makeLayout(0, scene().px1), b = makeLayout(0, scene().px2);
+    const PointArray a = kLayouts[1].make(scene().px1), b = kLayouts[1].make(scene().px2);
     for (const PoseOverload o :
          {PoseOverload::Camera, PoseOverload::Focal, PoseOverload::DistanceThresh})
         for (const auto& [name, Ein] : forms) {

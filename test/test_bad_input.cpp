@@ -138,6 +138,35 @@ TEST(BadInput, WrongChannelCount)
                      {"std::vector", "2D points"});
 }
 
+TEST(BadInput, LayoutMessagesDescribeTheArrayAndTheRule)
+{
+    // The message names the array as it is (shape, type, a view) and the rule of this overload and
+    // method, without contradicting itself (it once said "must be N x 2 ... got 200 x 2").
+    const int N = static_cast<int>(scene().px1.size());
+    const cv::Mat rows = cv::Mat(scene().px1, true).reshape(1, N); // N x 2
+    const cv::Mat columns = rows.t();                              // 2 x N
+    expectThrowsWith(
+        [&] { cv::essential::findEssentialMatIter(columns, columns, K(), cv::RANSAC); },
+        {"points1 is a 2 x " + std::to_string(N) + " CV_64FC1 array", "with RANSAC or LMEDS",
+         "USAC flags only"});
+    // The USAC flags read it.
+    EXPECT_NO_THROW(cv::essential::findEssentialMatIter(columns, columns, K(), cv::USAC_DEFAULT));
+    cv::Mat wide(N, 3, CV_64F, cv::Scalar(1));
+    rows.copyTo(wide.colRange(0, 2));
+    const cv::Mat view = wide.colRange(0, 2);
+    expectThrowsWith(
+        [&] {
+            cv::essential::findEssentialMatIter(view, view, K(), cv::Mat(), K(), cv::Mat(),
+                                                cv::RANSAC, 0.999, 1.0, cv::noArray());
+        },
+        {"points1 is a " + std::to_string(N) +
+             " x 2 CV_64FC1 array (a view, not continuous in "
+             "memory)",
+         "cv::undistortPoints", "continuous in memory"});
+    // Without distortion the same view is read.
+    EXPECT_NO_THROW(cv::essential::findEssentialMatIter(view, view, K(), cv::RANSAC));
+}
+
 TEST(BadInput, CameraMatrixNot3x3)
 {
     const std::vector<cv::Mat> bad = {cv::Mat::eye(2, 3, CV_64F), cv::Mat::eye(4, 4, CV_64F),

@@ -26,7 +26,8 @@ std::string describe(const Mat& m, bool isVector = false)
                " elements";
     if (m.dims > 2) return "a " + std::to_string(m.dims) + "-dimensional array";
     return "a " + std::to_string(m.rows) + " x " + std::to_string(m.cols) + " " +
-           typeToString(m.type()) + " array";
+           typeToString(m.type()) + " array" +
+           (m.isContinuous() ? "" : " (a view, not continuous in memory)");
 }
 
 /** What each reading accepts, for the error messages. */
@@ -55,8 +56,8 @@ const char* acceptedLayouts(PointReading how)
     badArg(std::string(name) + " is " + describe(m, isVector) + ": " + acceptedLayouts(how));
 }
 
-/** The points of `m` as an N x 1 two-channel double matrix (Classic and Undistort), or as an N x k
-one-channel double matrix whose first two columns are x and y (Usac). */
+/** The points of `m` as an N x k one-channel double matrix whose first two columns are x and y
+(k = 2 for Classic and Undistort). */
 Mat readAsRows(const Mat& m, bool isVector, const char* name, PointReading how)
 {
     if (m.dims > 2) badLayout(name, m, isVector, how);
@@ -75,8 +76,8 @@ Mat readAsRows(const Mat& m, bool isVector, const char* name, PointReading how)
         if (m.channels() > 1 && m.depth() == CV_32F && !m.isContinuous() &&
             static_cast<size_t>(m.rows) != m.total())
             badArg(std::string(name) + " is " + describe(m, isVector) +
-                   " that is not continuous in memory: as for cv::findEssentialMat with the USAC "
-                   "flags, a multi-channel view must be copied first");
+                   ": as for cv::findEssentialMat with the USAC flags, a multi-channel view of "
+                   "several columns must be copied first");
         Mat converted;
         m.convertTo(converted, CV_64F);
         // A vector of 2D points or an N x 2 matrix is taken as it is, so that too few points (one

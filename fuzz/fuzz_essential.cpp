@@ -2,11 +2,12 @@
 // See the LICENSE file at the top of the source tree.
 
 // The fuzz target: arbitrary bytes become points, cameras, distortion and parameters of one call of
-// findEssentialMatIter (any of its seven overloads) or recoverPose (either overload). The public
+// findEssentialMatIter (any of its seven overloads) or recoverPose (any of its four). The public
 // API may answer only in the documented ways: a cv::Exception, or a result that keeps the
 // documented shape (E empty or 3n x 3 CV_64F and finite, mask N x 1 CV_8U of 0/1 that is all zero
-// when E is empty, R a rotation, t a unit or zero vector). Anything else aborts, so that libFuzzer
-// (with AddressSanitizer and UndefinedBehaviorSanitizer) records the input.
+// when E is empty, R a rotation, t a unit or zero vector, triangulated points 4 x N finite).
+// Anything else aborts, so that libFuzzer (with AddressSanitizer and UndefinedBehaviorSanitizer)
+// records the input.
 //
 // Built two ways (fuzz/CMakeLists.txt): with clang's -fsanitize=fuzzer as the libFuzzer binary,
 // and with any compiler as a replay program (replay_main.cpp) that runs the kept inputs in
@@ -20,6 +21,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
+#include <limits>
 #include <vector>
 
 namespace {
@@ -352,7 +354,32 @@ void runOne(FuzzInput& in)
         if (in.pick(2)) poseMask = cv::Mat(std::max(n, 0), 1, CV_8U, cv::Scalar(in.pick(3)));
         int inFront;
         if (api == 7) {
-            inFront = ess::recoverPose(E, p1, p2, makeCamera(in), R, t, poseMask);
+            const cv::Mat K = makeCamera(in);
+            // Read last, so that shorter inputs (zeros past the end) keep the first form.
+            const int form = in.pick(3);
+            if (form == 0) {
+                inFront = ess::recoverPose(E, p1, p2, K, R, t, poseMask);
+            } else if (form == 1) {
+                static const double thresholds[] = {50.0, 1.0, 1e300,
+                                                    std::numeric_limits<double>::infinity()};
+                const double d = in.pick(4) == 0 ? in.anyDouble() : thresholds[in.pick(4)];
+                cv::Mat X;
+                inFront = ess::recoverPose(E, p1, p2, K, R, t, d, poseMask, X);
+                if (X.rows != 4 || X.cols != std::max(n, 0) || X.type() != CV_64F ||
+                    !cv::checkRange(X))
+                    broken("triangulated points shape");
+            } else {
+                cv::Mat Eout;
+                const cv::Mat d1 = makeDistortion(in), d2 = makeDistortion(in);
+                const int method = makeMethod(in);
+                const double prob = makeProb(in), thr = makeThreshold(in);
+                inFront = ess::recoverPose(p1, p2, K, d1, makeCamera(in), d2, Eout, R, t, method,
+                                           prob, thr, poseMask);
+                if (!Eout.empty() && (Eout.rows != 3 || Eout.cols != 3 || Eout.type() != CV_64F ||
+                                      !cv::checkRange(Eout)))
+                    broken("E of the two-camera recoverPose");
+                if (!poseMask.empty()) checkMask(poseMask, n, Eout.empty());
+            }
         } else {
             const double focal = in.pick(3) == 0 ? in.anyDouble() : 50.0 + in.pick(1000);
             inFront =

@@ -89,37 +89,82 @@ TEST(BadInput, NonFiniteCoordinates)
     }
 }
 
-TEST(BadInput, WrongDepth)
+TEST(BadInput, IntegerDepthsAsOpenCV)
 {
+    // cv::findEssentialMat converts the points to double whatever their depth, except in the form
+    // with distortion coefficients, whose cv::undistortPoints takes CV_32F or CV_64F only.
     const int N = static_cast<int>(scene().px1.size());
-    for (const int depth : {CV_32S, CV_8U, CV_16U}) {
+    for (const int depth : {CV_32S, CV_16U}) {
         SCOPED_TRACE(depth);
         cv::Mat p1, p2;
         cv::Mat(scene().px1).convertTo(p1, CV_MAKETYPE(depth, 2));
         cv::Mat(scene().px2).convertTo(p2, CV_MAKETYPE(depth, 2));
         ASSERT_EQ(p1.rows, N);
-        expectThrowsWith([&] { cv::essential::findEssentialMatIter(p1, p2, K()); },
-                         {"points1", "CV_32F or CV_64F"});
-        // Also as the second argument only.
-        expectThrowsWith([&] { cv::essential::findEssentialMatIter(scene().px1, p2, K()); },
-                         {"points2", "CV_32F or CV_64F"});
+        cv::Mat mask;
+        const cv::Mat E =
+            cv::essential::findEssentialMatIter(p1, p2, K(), cv::RANSAC, 0.999, 1.0, 1000, mask);
+        // Whole pixels (rounding noise of 0.3 px rms): still the scene's geometry.
+        ASSERT_FALSE(E.empty());
+        EXPECT_LT(essential_test::essentialDistance(cv::Matx33d(E), scene().E), 0.05);
+        expectThrowsWith(
+            [&] {
+                cv::essential::findEssentialMatIter(p1, p2, K(), cv::Mat(), K(), cv::Mat(),
+                                                    cv::RANSAC, 0.999, 1.0, cv::noArray());
+            },
+            {"points1", "CV_32F or CV_64F"});
     }
     std::vector<cv::Point2i> ip(scene().px1.begin(), scene().px1.end());
-    expectThrowsWith([&] { cv::essential::findEssentialMatIter(ip, ip, K()); },
-                     {"CV_32F or CV_64F"});
+    expectThrowsWith(
+        [&] {
+            cv::essential::findEssentialMatIter(ip, ip, K(), cv::Mat(), K(), cv::Mat(), cv::RANSAC,
+                                                0.999, 1.0, cv::noArray());
+        },
+        {"points1", "std::vector", "CV_32F or CV_64F"});
 }
 
 TEST(BadInput, WrongChannelCount)
 {
+    // RANSAC reads 2D points only (as cv::findEssentialMat; the USAC flags would take the first
+    // two coordinates of these).
     const int N = static_cast<int>(scene().px1.size());
     cv::Mat three(N, 1, CV_64FC3, cv::Scalar(1, 2, 3));
     expectThrowsWith([&] { cv::essential::findEssentialMatIter(three, three, K()); },
-                     {"points1", "2D points", "3 channels"});
+                     {"points1", "2D points", "CV_64FC3"});
     cv::Mat nx3(N, 3, CV_64F, cv::Scalar(1));
     expectThrowsWith([&] { cv::essential::findEssentialMatIter(nx3, nx3, K()); },
-                     {"points1", "2D points"});
+                     {"points1", "2D points", "USAC flags only"});
     std::vector<cv::Point3d> p3(static_cast<size_t>(N), cv::Point3d(1, 2, 3));
-    expectThrowsWith([&] { cv::essential::findEssentialMatIter(p3, p3, K()); }, {"2D points"});
+    expectThrowsWith([&] { cv::essential::findEssentialMatIter(p3, p3, K()); },
+                     {"std::vector", "2D points"});
+}
+
+TEST(BadInput, LayoutMessagesDescribeTheArrayAndTheRule)
+{
+    // The message names the array as it is (shape, type, a view) and the rule of this overload and
+    // method, without contradicting itself (it once said "must be N x 2 ... got 200 x 2").
+    const int N = static_cast<int>(scene().px1.size());
+    const cv::Mat rows = cv::Mat(scene().px1, true).reshape(1, N); // N x 2
+    const cv::Mat columns = rows.t();                              // 2 x N
+    expectThrowsWith(
+        [&] { cv::essential::findEssentialMatIter(columns, columns, K(), cv::RANSAC); },
+        {"points1 is a 2 x " + std::to_string(N) + " CV_64FC1 array", "with RANSAC or LMEDS",
+         "USAC flags only"});
+    // The USAC flags read it.
+    EXPECT_NO_THROW(cv::essential::findEssentialMatIter(columns, columns, K(), cv::USAC_DEFAULT));
+    cv::Mat wide(N, 3, CV_64F, cv::Scalar(1));
+    rows.copyTo(wide.colRange(0, 2));
+    const cv::Mat view = wide.colRange(0, 2);
+    expectThrowsWith(
+        [&] {
+            cv::essential::findEssentialMatIter(view, view, K(), cv::Mat(), K(), cv::Mat(),
+                                                cv::RANSAC, 0.999, 1.0, cv::noArray());
+        },
+        {"points1 is a " + std::to_string(N) +
+             " x 2 CV_64FC1 array (a view, not continuous in "
+             "memory)",
+         "cv::undistortPoints", "continuous in memory"});
+    // Without distortion the same view is read.
+    EXPECT_NO_THROW(cv::essential::findEssentialMatIter(view, view, K(), cv::RANSAC));
 }
 
 TEST(BadInput, CameraMatrixNot3x3)

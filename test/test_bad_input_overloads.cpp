@@ -2,7 +2,7 @@
 // See the LICENSE file at the top of the source tree.
 
 // The bad-input table of docs/ROBUSTNESS.md, row by row, through every public overload: the seven
-// findEssentialMatIter overloads and both recoverPose overloads. Each row either raises a
+// findEssentialMatIter overloads and the four recoverPose overloads. Each row either raises a
 // cv::Exception whose message names the argument, or returns the documented result; never a crash,
 // a hang or an uninitialised output. (test_bad_input.cpp has the first checks on the main overload;
 // this file extends every row to every overload, and adds the rows it lacked.)
@@ -68,6 +68,8 @@ enum Takes : unsigned {
     kMaxIters = 32,    // an iteration cap
     kEstimates = 64,   // returns E (findEssentialMatIter); otherwise recoverPose
     kNeedsFivePoints = 128,
+    kUndistorts = 256,  // reads points as cv::undistortPoints (CV_32F / CV_64F only)
+    kUsacReading = 512, // reads points as OpenCV's USAC (N x k, k x N, first two coordinates)
 };
 
 struct Overload
@@ -107,13 +109,15 @@ const std::vector<Overload>& overloads()
                                               a.threshold, mask);
          }},
         {"findEssentialMatIter(K1, d1, K2, d2, method, prob, threshold, mask)",
-         kCameraMatrix | kSecondCamera | kMethod | kProb | kEstimates | kNeedsFivePoints,
+         kCameraMatrix | kSecondCamera | kMethod | kProb | kEstimates | kNeedsFivePoints |
+             kUndistorts,
          [](const Args& a, cv::Mat& mask) {
              return ess::findEssentialMatIter(a.p1, a.p2, a.K1, a.d1, a.K2, a.d2, a.method, a.prob,
                                               a.threshold, mask);
          }},
         {"findEssentialMatIter(K1, K2, d1, d2, mask, UsacParams)",
-         kCameraMatrix | kSecondCamera | kProb | kMaxIters | kEstimates | kNeedsFivePoints,
+         kCameraMatrix | kSecondCamera | kProb | kMaxIters | kEstimates | kNeedsFivePoints |
+             kUsacReading, // Args has no distortion coefficients
          [](const Args& a, cv::Mat& mask) {
              cv::UsacParams usac;
              usac.confidence = a.prob;
@@ -122,7 +126,7 @@ const std::vector<Overload>& overloads()
              return ess::findEssentialMatIter(a.p1, a.p2, a.K1, a.K2, a.d1, a.d2, mask, usac);
          }},
         {"findEssentialMatIter(K, EssentialParams, mask, report)",
-         kCameraMatrix | kMethod | kProb | kMaxIters | kEstimates | kNeedsFivePoints,
+         kCameraMatrix | kMethod | kProb | kMaxIters | kEstimates | kNeedsFivePoints | kUsacReading,
          [](const Args& a, cv::Mat& mask) {
              ess::EssentialParams params;
              params.method = a.method;
@@ -151,6 +155,28 @@ const std::vector<Overload>& overloads()
              EXPECT_EQ(R.size(), cv::Size(3, 3));
              EXPECT_EQ(t.size(), cv::Size(1, 3));
              return cv::Mat();
+         }},
+        {"recoverPose(E, K, R, t, distanceThresh, mask, triangulatedPoints)", kCameraMatrix,
+         [](const Args& a, cv::Mat& mask) {
+             cv::Mat R, t, X;
+             const int n = ess::recoverPose(a.E, a.p1, a.p2, a.K1, R, t, 50.0, mask, X);
+             EXPECT_GE(n, 0);
+             EXPECT_EQ(R.size(), cv::Size(3, 3));
+             EXPECT_EQ(t.size(), cv::Size(1, 3));
+             EXPECT_EQ(X.size(), cv::Size(a.p1.rows, 4));
+             return cv::Mat();
+         }},
+        {"recoverPose(K1, d1, K2, d2, E, R, t, method, prob, threshold, mask)",
+         kCameraMatrix | kSecondCamera | kMethod | kProb | kEstimates | kNeedsFivePoints |
+             kUndistorts,
+         [](const Args& a, cv::Mat& mask) {
+             cv::Mat E, R, t;
+             const int n = ess::recoverPose(a.p1, a.p2, a.K1, a.d1, a.K2, a.d2, E, R, t, a.method,
+                                            a.prob, a.threshold, mask);
+             EXPECT_GE(n, 0);
+             EXPECT_EQ(R.size(), cv::Size(3, 3));
+             EXPECT_EQ(t.size(), cv::Size(1, 3));
+             return E;
          }},
     };
     return list;
@@ -230,7 +256,7 @@ double essentialDistance(const cv::Mat& E, const cv::Matx33d& truth)
     return std::min(cv::norm(e / ne - truth * (1.0 / nt)), cv::norm(e / ne + truth * (1.0 / nt)));
 }
 
-constexpr int kAll = 9, kEstimators = 7;
+constexpr int kAll = 11, kEstimators = 8;
 
 TEST(BadInputTable, EmptyPoints)
 {
@@ -288,27 +314,63 @@ TEST(BadInputTable, NonFiniteCoordinates)
     }
 }
 
-TEST(BadInputTable, WrongDepth)
+TEST(BadInputTable, IntegerDepths)
 {
+    // As OpenCV: converted to double, except by the forms that undistort (cv::undistortPoints
+    // takes CV_32F or CV_64F only).
     for (const int depth : {CV_8U, CV_16S, CV_32S}) {
         SCOPED_TRACE(depth);
         Args a;
         a.p1.convertTo(a.p1, CV_MAKETYPE(depth, 2));
-        expectThrowsOnAll(0, a, {"points1", "CV_32F or CV_64F"}, kAll);
+        expectThrowsOnAll(kUndistorts, a, {"points1", "CV_32F or CV_64F"}, 2);
+        forEachOverload(0, [&](const Overload& o) {
+            if (o.takes & kUndistorts) return;
+            cv::Mat mask;
+            const cv::Mat E = o.call(a, mask); // CV_8U saturates: any result, but no exception
+            EXPECT_EQ(mask.rows, a.p1.rows);
+            if ((o.takes & kEstimates) && depth != CV_8U) {
+                ASSERT_FALSE(E.empty());
+                EXPECT_LT(essentialDistance(E, scene().E), 0.05);
+            }
+        });
     }
 }
 
 TEST(BadInputTable, WrongChannelsOrShape)
 {
     const int n = static_cast<int>(scene().px1.size());
-    const std::vector<cv::Mat> bad = {
-        cv::Mat(n, 1, CV_64FC3, cv::Scalar(1, 2, 3)), cv::Mat(n, 3, CV_64F, cv::Scalar(1)),
-        cv::Mat(2, n, CV_64FC2, cv::Scalar(1, 2)), cv::Mat(n, 1, CV_64F, cv::Scalar(1))};
+    // No reading takes these (measured with cv::findEssentialMat: test_drop_in_layouts.cpp).
+    const std::vector<cv::Mat> bad = {cv::Mat(n, 1, CV_64F, cv::Scalar(1)),
+                                      cv::Mat(1, 2 * n, CV_64F, cv::Scalar(1)),
+                                      cv::Mat(2 * n, 1, CV_64F, cv::Scalar(1))};
     for (size_t k = 0; k < bad.size(); ++k) {
         SCOPED_TRACE(k);
         Args a;
         a.p2 = bad[k];
-        expectThrowsOnAll(0, a, {"points2", "2D points"}, kAll);
+        expectThrowsOnAll(0, a, {"points2"}, kAll);
+    }
+    // Homogeneous points (N x 3, N x 1 three-channel): only OpenCV's USAC reading takes them, as
+    // their first two coordinates; the others reject them naming the layouts they take.
+    cv::Mat homogeneous;
+    cv::convertPointsToHomogeneous(cv::Mat(scene().px2), homogeneous); // N x 1 CV_64FC3
+    for (const cv::Mat& points : {homogeneous, homogeneous.reshape(1, n)}) {
+        Args a;
+        a.p2 = points;
+        forEachOverload(0, [&](const Overload& o) {
+            if (o.takes & kUsacReading) {
+                cv::Mat mask;
+                const cv::Mat E = o.call(a, mask);
+                ASSERT_FALSE(E.empty());
+                EXPECT_LT(essentialDistance(E, scene().E), 0.02);
+            } else {
+                expectThrowsWith(
+                    [&] {
+                        cv::Mat mask;
+                        o.call(a, mask);
+                    },
+                    {"points2", "2D points"});
+            }
+        });
     }
 }
 
@@ -410,17 +472,17 @@ TEST(BadInputTable, CameraMatrixNot3x3)
         Args a;
         a.K1 = bad[k];
         // Named cameraMatrix in the one-camera forms, cameraMatrix1 in the two-camera ones.
-        expectThrowsOnAll(kCameraMatrix, a, {"cameraMatrix", "3 x 3"}, 6);
+        expectThrowsOnAll(kCameraMatrix, a, {"cameraMatrix", "3 x 3"}, 8);
         Args b;
         b.K2 = bad[k];
-        expectThrowsOnAll(kSecondCamera, b, {"cameraMatrix2", "3 x 3"}, 2);
+        expectThrowsOnAll(kSecondCamera, b, {"cameraMatrix2", "3 x 3"}, 3);
     }
     Args e;
     e.K1 = cv::Mat();
-    expectThrowsOnAll(kCameraMatrix, e, {"cameraMatrix", "empty"}, 6);
+    expectThrowsOnAll(kCameraMatrix, e, {"cameraMatrix", "empty"}, 8);
     Args i;
     i.K1 = cv::Mat::eye(3, 3, CV_32S);
-    expectThrowsOnAll(kCameraMatrix, i, {"cameraMatrix", "CV_32F or CV_64F"}, 6);
+    expectThrowsOnAll(kCameraMatrix, i, {"cameraMatrix", "CV_32F or CV_64F"}, 8);
 }
 
 TEST(BadInputTable, CameraMatrixNonFiniteSingularOrNegativeFocal)
@@ -441,15 +503,15 @@ TEST(BadInputTable, CameraMatrixNonFiniteSingularOrNegativeFocal)
         SCOPED_TRACE(c.needle + " at " + std::to_string(c.row) + "," + std::to_string(c.col));
         Args a;
         a.K1.at<double>(c.row, c.col) = c.value;
-        expectThrowsOnAll(kCameraMatrix, a, {"cameraMatrix", c.needle}, 6);
+        expectThrowsOnAll(kCameraMatrix, a, {"cameraMatrix", c.needle}, 8);
         Args b;
         b.K2.at<double>(c.row, c.col) = c.value;
-        expectThrowsOnAll(kSecondCamera, b, {"cameraMatrix2", c.needle}, 2);
+        expectThrowsOnAll(kSecondCamera, b, {"cameraMatrix2", c.needle}, 3);
     }
     // Positive focal lengths, dependent rows (skew chosen so that the first two rows are parallel).
     Args s;
     s.K1 = (cv::Mat_<double>(3, 3) << 500, 1000, 0, 250, 500, 0, 0, 0, 1);
-    expectThrowsOnAll(kCameraMatrix, s, {"cameraMatrix", "singular"}, 6);
+    expectThrowsOnAll(kCameraMatrix, s, {"cameraMatrix", "singular"}, 8);
     // The focal forms.
     for (const double focal : {0.0, -500.0, kNaN, kInf}) {
         SCOPED_TRACE(focal);
@@ -470,17 +532,17 @@ TEST(BadInputTable, DistortionCoefficients)
         Args a;
         a.d1 = cv::Mat::zeros(1, len, CV_64F);
         expectThrowsOnAll(kSecondCamera, a,
-                          {"distCoeffs1", "4, 5, 8, 12 or 14", "got " + std::to_string(len)}, 2);
+                          {"distCoeffs1", "4, 5, 8, 12 or 14", "got " + std::to_string(len)}, 3);
         Args b;
         b.d2 = cv::Mat::zeros(len, 1, CV_32F);
-        expectThrowsOnAll(kSecondCamera, b, {"distCoeffs2", "got " + std::to_string(len)}, 2);
+        expectThrowsOnAll(kSecondCamera, b, {"distCoeffs2", "got " + std::to_string(len)}, 3);
     }
     Args nan;
     nan.d1 = (cv::Mat_<double>(1, 5) << 0.1, kNaN, 0, 0, 0);
-    expectThrowsOnAll(kSecondCamera, nan, {"distCoeffs1", "non-finite"}, 2);
+    expectThrowsOnAll(kSecondCamera, nan, {"distCoeffs1", "non-finite"}, 3);
     Args depth;
     depth.d2 = cv::Mat::zeros(1, 5, CV_32S);
-    expectThrowsOnAll(kSecondCamera, depth, {"distCoeffs2", "CV_32F or CV_64F"}, 2);
+    expectThrowsOnAll(kSecondCamera, depth, {"distCoeffs2", "CV_32F or CV_64F"}, 3);
     // Zero coefficients of every valid length: the same model as without distortion.
     for (const int len : {4, 5, 8, 12, 14}) {
         SCOPED_TRACE(len);
@@ -564,7 +626,7 @@ TEST(BadInputTable, UnknownMethod)
         SCOPED_TRACE(method);
         Args a;
         a.method = method;
-        expectThrowsOnAll(kMethod, a, {"method", std::to_string(method)}, 6);
+        expectThrowsOnAll(kMethod, a, {"method", std::to_string(method)}, 7);
     }
 }
 
@@ -603,7 +665,6 @@ TEST(BadInputTable, UnknownSolverEngineSamplerOrOption)
         {[](ess::EssentialParams& p) { p.preemptiveHypotheses = -1; }, "preemptiveHypotheses"},
         {[](ess::EssentialParams& p) { p.timeBudgetMs = -1; }, "timeBudgetMs"},
         {[](ess::EssentialParams& p) { p.timeBudgetMs = kNaN; }, "timeBudgetMs"},
-        {[](ess::EssentialParams& p) { p.timeBudgetMs = kInf; }, "timeBudgetMs"},
         {[](ess::EssentialParams& p) {
              p.engine = ess::ENGINE_PREEMPTIVE;
              p.method = cv::LMEDS;
@@ -672,6 +733,13 @@ TEST(BadInputTable, RecoverPoseEssentialMatrixAndMask)
     EXPECT_EQ(cv::norm(R, cv::Mat::eye(3, 3, CV_64F)), 0.0);
     EXPECT_EQ(cv::norm(t), 0.0);
     EXPECT_EQ(cv::countNonZero(mask), 0);
+    // distanceThresh must be positive (+inf: no cut).
+    for (const double d : {0.0, -1.0, kNaN, -kInf}) {
+        SCOPED_TRACE(d);
+        expectThrowsWith(
+            [&] { ess::recoverPose(cv::Mat(scene().E), scene().px1, scene().px2, K, R, t, d); },
+            {"distanceThresh"});
+    }
     // A mask of the wrong size or type.
     cv::Mat shortMask(10, 1, CV_8U, cv::Scalar(1));
     expectThrowsWith(

@@ -359,8 +359,11 @@ TEST(RecoverPose, BadEssentialRaises)
     const SyntheticScene s = makeScene(inlierScene(0.0), 56);
     cv::Mat R, t;
     const std::vector<cv::Mat> bad = {
-        cv::Mat(), cv::Mat(9, 1, CV_64F, cv::Scalar(0.1)), cv::Mat(6, 3, CV_64F, cv::Scalar(0.1)),
-        cv::Mat(3, 3, CV_64FC2, cv::Scalar(0.1)), cv::Mat(3, 3, CV_32S, cv::Scalar(1))};
+        // E's nine entries are read from any continuous array (as cv::recoverPose): a 9 x 1
+        // column of a wider matrix is not continuous.
+        cv::Mat(), cv::Mat(9, 2, CV_64F, cv::Scalar(0.1)).col(0),
+        cv::Mat(6, 3, CV_64F, cv::Scalar(0.1)), cv::Mat(3, 3, CV_64FC2, cv::Scalar(0.1)),
+        cv::Mat(3, 3, CV_32S, cv::Scalar(1))};
     for (size_t k = 0; k < bad.size(); ++k) {
         SCOPED_TRACE(k);
         try {

@@ -7,8 +7,11 @@
 
 #include "opencv2/essential.hpp"
 
+#include "drop_in_estimate.hpp"
 #include "geometry/degeneracy.hpp"
 #include "geometry/essential_decomposition.hpp"
+#include "mask_output.hpp"
+#include "point_layouts.hpp"
 #include "pose/pose_recovery.hpp"
 #include "problem.hpp"
 #include "ransac/msac_score.hpp"
@@ -32,14 +35,6 @@ namespace {
 double msSince(int64 start)
 {
     return double(getTickCount() - start) * 1000.0 / getTickFrequency();
-}
-
-void writeMask(OutputArray mask, const std::vector<uchar>& values)
-{
-    if (!mask.needed()) return;
-    mask.create(static_cast<int>(values.size()), 1, CV_8U);
-    Mat m = mask.getMat();
-    if (!values.empty()) std::copy(values.begin(), values.end(), m.ptr<uchar>());
 }
 
 Mat toMat(const Matx33d& E)
@@ -176,9 +171,16 @@ bool moreDistinctInliersThan(const Problem& problem, const std::vector<uchar>& m
     return false;
 }
 
-/** The pipeline shared by every overload. `problem` holds normalised points and threshold. */
+/** Whether a call has a time budget: a positive finite timeBudgetMs (0 and +inf mean none). */
+bool hasTimeBudget(const EssentialParams& params)
+{
+    return params.timeBudgetMs > 0 && std::isfinite(params.timeBudgetMs);
+}
+
+/** The pipeline shared by every overload. `problem` holds normalised points and threshold;
+`maskWriting` says how the mask goes into the caller's array. */
 Mat estimate(const Problem& problem, const EssentialParams& params, OutputArray mask,
-             EssentialReport* report, int64 start)
+             MaskWriting maskWriting, EssentialReport* report, int64 start)
 {
     const int n = problem.size();
     EssentialReport local;
@@ -208,7 +210,7 @@ Mat estimate(const Problem& problem, const EssentialParams& params, OutputArray 
                 for (int j = 0; j < 3; ++j)
                     rep.E(i, j) = stacked.at<double>(i, j);
         }
-        writeMask(mask, inliers);
+        writeMask(mask, inliers, maskWriting);
         rep.timeTotalMs = msSince(start);
         return stacked;
     }
@@ -224,7 +226,7 @@ Mat estimate(const Problem& problem, const EssentialParams& params, OutputArray 
     settings.loScale = problem.threshold * kRefineScaleFraction;
     settings.prosac = params.sampler == SAMPLING_PROSAC;
     settings.sprt = params.sprt; // used by the adaptive MSAC loop only
-    if (params.timeBudgetMs > 0)
+    if (hasTimeBudget(params))
         settings.deadline =
             ransac::Deadline::after(params.timeBudgetMs - msSince(start) - finishingReserveMs(n));
     ransac::SearchResult found;
@@ -246,7 +248,7 @@ Mat estimate(const Problem& problem, const EssentialParams& params, OutputArray 
     rep.sprtRejections = found.sprtRejections;
     rep.timeSearchMs = msSince(tSearch);
     if (!found.found) {
-        writeMask(mask, inliers);
+        writeMask(mask, inliers, maskWriting);
         rep.timeTotalMs = msSince(start);
         return Mat();
     }
@@ -275,7 +277,7 @@ Mat estimate(const Problem& problem, const EssentialParams& params, OutputArray 
                                       solver->sampleSize(), std::max(1, found.hypothesesScored))) {
         std::fill(inliers.begin(), inliers.end(), uchar(0));
         rep.inliers = 0;
-        writeMask(mask, inliers);
+        writeMask(mask, inliers, maskWriting);
         rep.timeTotalMs = msSince(start);
         return Mat();
     }
@@ -304,7 +306,7 @@ Mat estimate(const Problem& problem, const EssentialParams& params, OutputArray 
         }
         rep.timePoseMs = msSince(tPose);
     }
-    writeMask(mask, inliers);
+    writeMask(mask, inliers, maskWriting);
     rep.timeTotalMs = msSince(start);
     return toMat(E);
 }
@@ -340,7 +342,8 @@ void applyUsacFlag(int method, EssentialParams& p)
     }
 }
 
-/** The drop-in overloads' settings from OpenCV's arguments. */
+} // namespace
+
 EssentialParams dropInParams(int method, double prob, double threshold, int maxIters)
 {
     checkMethod(method);
@@ -355,6 +358,8 @@ EssentialParams dropInParams(int method, double prob, double threshold, int maxI
     applyUsacFlag(method, p);
     return p;
 }
+
+namespace {
 
 /** The module's settings from a UsacParams (the mapping documented in essential.hpp). */
 /** An enum field of UsacParams as the int it holds. A value outside the enumeration (which a caller
@@ -437,11 +442,11 @@ EssentialParams usacParams(const UsacParams& usac)
 }
 
 Mat estimateWithCamera(InputArray points1, InputArray points2, const Matx33d& K,
-                       const EssentialParams& params, OutputArray mask, EssentialReport* report,
-                       int64 start)
+                       const EssentialParams& params, PointReading reading, OutputArray mask,
+                       MaskWriting maskWriting, EssentialReport* report, int64 start)
 {
-    std::vector<Point2d> p1 = readPoints(points1, "points1");
-    std::vector<Point2d> p2 = readPoints(points2, "points2");
+    std::vector<Point2d> p1, p2;
+    readPointPair(points1, points2, reading, p1, p2);
     checkPointSets(p1, p2, 5);
     const double meanFocal = 0.5 * (K(0, 0) + K(1, 1));
     std::vector<Point2d> n1 = normalisePoints(p1, K), n2 = normalisePoints(p2, K);
@@ -449,7 +454,7 @@ Mat estimateWithCamera(InputArray points1, InputArray points2, const Matx33d& K,
     checkNormalisedPoints(n2, "points2");
     Problem problem =
         makeProblem(std::move(n1), std::move(n2), normalisedThreshold(params.threshold, meanFocal));
-    return estimate(problem, params, mask, report, start);
+    return estimate(problem, params, mask, maskWriting, report, start);
 }
 
 void checkDistortion(InputArray d, const char* name)
@@ -468,14 +473,17 @@ void checkDistortion(InputArray d, const char* name)
     if (!checkRange(d64)) CV_Error(Error::StsBadArg, std::string(name) + " has a non-finite entry");
 }
 
-/** The two-camera forms: each view undistorted and normalised with its own camera; the pixel
-threshold converted with the mean focal length of the two cameras, as OpenCV does. */
+} // namespace
+
 Mat estimateTwoCameras(InputArray points1, InputArray points2, InputArray cameraMatrix1,
                        InputArray distCoeffs1, InputArray cameraMatrix2, InputArray distCoeffs2,
-                       const EssentialParams& params, OutputArray mask, int64 start)
+                       const EssentialParams& params, PointReading reading, OutputArray mask,
+                       MaskWriting maskWriting, std::vector<Point2d>* normalised1,
+                       std::vector<Point2d>* normalised2)
 {
-    std::vector<Point2d> p1 = readPoints(points1, "points1");
-    std::vector<Point2d> p2 = readPoints(points2, "points2");
+    const int64 start = getTickCount();
+    std::vector<Point2d> p1, p2;
+    readPointPair(points1, points2, reading, p1, p2);
     checkPointSets(p1, p2, 5);
     const Matx33d K1 = readCameraMatrix(cameraMatrix1, "cameraMatrix1");
     const Matx33d K2 = readCameraMatrix(cameraMatrix2, "cameraMatrix2");
@@ -487,13 +495,13 @@ Mat estimateTwoCameras(InputArray points1, InputArray points2, InputArray camera
     // Extreme distortion coefficients can send undistorted points to infinity or NaN.
     checkNormalisedPoints(n1, "points1 (undistorted with distCoeffs1)");
     checkNormalisedPoints(n2, "points2 (undistorted with distCoeffs2)");
+    if (normalised1) *normalised1 = n1;
+    if (normalised2) *normalised2 = n2;
     const double meanFocal = 0.25 * (K1(0, 0) + K1(1, 1) + K2(0, 0) + K2(1, 1));
     Problem problem =
         makeProblem(std::move(n1), std::move(n2), normalisedThreshold(params.threshold, meanFocal));
-    return estimate(problem, params, mask, nullptr, start);
+    return estimate(problem, params, mask, maskWriting, nullptr, start);
 }
-
-} // namespace
 
 Mat findEssentialMatIter(InputArray points1, InputArray points2, InputArray cameraMatrix,
                          int method, double prob, double threshold, int maxIters, OutputArray mask)
@@ -501,7 +509,8 @@ Mat findEssentialMatIter(InputArray points1, InputArray points2, InputArray came
     const int64 start = getTickCount();
     const EssentialParams params = dropInParams(method, prob, threshold, maxIters);
     const Matx33d K = readCameraMatrix(cameraMatrix, "cameraMatrix");
-    return estimateWithCamera(points1, points2, K, params, mask, nullptr, start);
+    return estimateWithCamera(points1, points2, K, params, readingForMethod(method), mask,
+                              maskWritingForMethod(method), nullptr, start);
 }
 
 Mat findEssentialMatIter(InputArray points1, InputArray points2, InputArray cameraMatrix,
@@ -516,7 +525,8 @@ Mat findEssentialMatIter(InputArray points1, InputArray points2, double focal, P
 {
     const int64 start = getTickCount();
     const EssentialParams params = dropInParams(method, prob, threshold, maxIters);
-    return estimateWithCamera(points1, points2, cameraFromFocal(focal, pp), params, mask, nullptr,
+    return estimateWithCamera(points1, points2, cameraFromFocal(focal, pp), params,
+                              readingForMethod(method), mask, maskWritingForMethod(method), nullptr,
                               start);
 }
 
@@ -530,20 +540,24 @@ Mat findEssentialMatIter(InputArray points1, InputArray points2, InputArray came
                          InputArray distCoeffs1, InputArray cameraMatrix2, InputArray distCoeffs2,
                          int method, double prob, double threshold, OutputArray mask)
 {
-    const int64 start = getTickCount();
     const EssentialParams params = dropInParams(method, prob, threshold, 1000);
+    // OpenCV undistorts first (cv::undistortPoints reads the points), whatever the method.
     return estimateTwoCameras(points1, points2, cameraMatrix1, distCoeffs1, cameraMatrix2,
-                              distCoeffs2, params, mask, start);
+                              distCoeffs2, params, PointReading::Undistort, mask,
+                              maskWritingForMethod(method));
 }
 
 Mat findEssentialMatIter(InputArray points1, InputArray points2, InputArray cameraMatrix1,
                          InputArray cameraMatrix2, InputArray distCoeffs1, InputArray distCoeffs2,
                          OutputArray mask, const UsacParams& usac)
 {
-    const int64 start = getTickCount();
     const EssentialParams params = usacParams(usac);
+    // OpenCV's USAC undistorts (a continuous copy of) the points only when there are coefficients.
+    const PointReading reading = distCoeffs1.empty() && distCoeffs2.empty()
+                                     ? PointReading::Usac
+                                     : PointReading::UndistortCopy;
     return estimateTwoCameras(points1, points2, cameraMatrix1, distCoeffs1, cameraMatrix2,
-                              distCoeffs2, params, mask, start);
+                              distCoeffs2, params, reading, mask, MaskWriting::Usac);
 }
 
 Mat findEssentialMatIter(InputArray points1, InputArray points2, InputArray cameraMatrix,
@@ -560,9 +574,11 @@ Mat findEssentialMatIter(InputArray points1, InputArray points2, InputArray came
                                        std::to_string(params.engine));
     if (params.engine == ENGINE_PREEMPTIVE && params.method != RANSAC)
         CV_Error(Error::StsBadArg, "ENGINE_PREEMPTIVE scores with MSAC: method must be RANSAC");
-    if (!(params.timeBudgetMs >= 0) || !std::isfinite(params.timeBudgetMs))
-        CV_Error(Error::StsBadArg, "EssentialParams::timeBudgetMs must be finite and >= 0");
-    if (params.timeBudgetMs > 0 && params.engine == ENGINE_OPENCV)
+    if (!(params.timeBudgetMs >= 0))
+        CV_Error(Error::StsBadArg, "EssentialParams::timeBudgetMs must be >= 0 (0 or +inf: no "
+                                   "budget), got " +
+                                       std::to_string(params.timeBudgetMs));
+    if (hasTimeBudget(params) && params.engine == ENGINE_OPENCV)
         CV_Error(Error::StsNotImplemented,
                  "EssentialParams::timeBudgetMs is not supported by ENGINE_OPENCV (OpenCV's loop "
                  "has no deadline); use ENGINE_ADAPTIVE or ENGINE_PREEMPTIVE");
@@ -594,7 +610,10 @@ Mat findEssentialMatIter(InputArray points1, InputArray points2, InputArray came
     checkThreshold(params.threshold);
     checkMaxIters(params.maxIters);
     const Matx33d K = readCameraMatrix(cameraMatrix, "cameraMatrix");
-    return estimateWithCamera(points1, points2, K, params, mask, report, start);
+    // The module's own overload reads every layout of any drop-in form (the USAC reading accepts
+    // them all) and writes the mask as N x 1.
+    return estimateWithCamera(points1, points2, K, params, PointReading::Usac, mask,
+                              MaskWriting::Usac, report, start);
 }
 
 } // namespace essential

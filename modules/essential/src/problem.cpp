@@ -20,34 +20,6 @@ namespace {
 
 } // namespace
 
-std::vector<Point2d> readPoints(InputArray points, const char* name)
-{
-    const std::string arg(name);
-    if (points.empty()) badArg(arg + " is empty: at least 5 points are needed");
-    Mat m = points.getMat();
-    const int depth = m.depth();
-    if (depth != CV_32F && depth != CV_64F)
-        badArg(arg + " must hold CV_32F or CV_64F coordinates (got depth " + std::to_string(depth) +
-               ")");
-    const int n = m.checkVector(2);
-    if (n < 0)
-        badArg(arg +
-               " must be a vector of 2D points, an N x 2 one-channel or an N x 1 two-channel "
-               "matrix (got " +
-               std::to_string(m.rows) + " x " + std::to_string(m.cols) + " with " +
-               std::to_string(m.channels()) + " channels)");
-    Mat converted;
-    m.reshape(2, n).convertTo(converted, CV_64FC2);
-    std::vector<Point2d> out(static_cast<size_t>(n));
-    const Point2d* src = converted.ptr<Point2d>();
-    for (int i = 0; i < n; ++i) {
-        if (!std::isfinite(src[i].x) || !std::isfinite(src[i].y))
-            badArg(arg + " has a non-finite coordinate at index " + std::to_string(i));
-        out[static_cast<size_t>(i)] = src[i];
-    }
-    return out;
-}
-
 void checkPointSets(const std::vector<Point2d>& p1, const std::vector<Point2d>& p2, int minPoints)
 {
     if (p1.size() != p2.size())

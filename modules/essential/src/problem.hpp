@@ -30,11 +30,6 @@ struct Problem
     int size() const { return static_cast<int>(x1.size()); }
 };
 
-/** Reads points in any OpenCV layout (vector<Point2f|Point2d>, N x 2 one-channel or N x 1
-two-channel Mat, CV_32F or CV_64F) into Point2d. `name` is used in error messages. Throws
-cv::Exception for an empty or wrongly shaped array, another depth, or non-finite coordinates. */
-std::vector<Point2d> readPoints(InputArray points, const char* name);
-
 /** Checks that the two point sets have the same size and at least `minPoints` points. */
 void checkPointSets(const std::vector<Point2d>& p1, const std::vector<Point2d>& p2, int minPoints);
 

@@ -22,9 +22,35 @@ new best model is polished by a few iterations of iteratively reweighted least s
 inliers (local optimisation), and the winner is refined on all points by IRLS.
 
 findEssentialMatIter() has every overload of `cv::findEssentialMat` (OpenCV 4.6) with the same
-arguments, defaults, return value and mask, so renaming a call site is enough to switch.
+arguments, defaults, return value and mask, and recoverPose() every overload of `cv::recoverPose`,
+so renaming a call site is enough to switch.
 
-Differences from `cv::findEssentialMat` that a caller may notice:
+Input and output arrays are taken exactly as OpenCV 4.6 takes them (checked against OpenCV itself
+for every overload, method flag, 21 point layouts and 7 mask forms by test/test_drop_in_layouts.cpp
+and test/test_drop_in_recover_pose.cpp; the table: docs/ROBUSTNESS.md, "Point layouts"). OpenCV
+reads points in one of three ways, depending on the overload and the method:
+
+- RANSAC and LMEDS (camera-matrix and focal forms), and recoverPose() from E: any depth, converted
+  to double; `std::vector<Point2f|Point2d|Point>`, an N x 2 one-channel or N x 1 / 1 x N
+  two-channel matrix, views included; both arrays with the same number of channels (so not a
+  vector of points with an N x 2 matrix);
+- the USAC flags (camera-matrix and focal forms) and the UsacParams form without distortion: any
+  depth; one point per row of an N x k matrix (k >= 2; the first two coordinates are x and y, so
+  homogeneous N x 3 points must have w = 1) or per element of a k-channel array, a matrix with fewer
+  rows than columns transposed first (2 x N, 3 x N);
+- the forms with distortion coefficients (which call cv::undistortPoints first) and recoverPose()'s
+  two-camera form: CV_32F or CV_64F only; the shapes above or their transposes (2 x N), continuous
+  in memory (a view such as `pts.colRange(0, 2)` is rejected, except by the UsacParams form, which
+  copies it first).
+
+A mask is written as by the same path: RANSAC and LMEDS keep a caller's preallocated 1 x N CV_8U
+mask as 1 x N (OpenCV creates the mask allowing the transposed shape) and reject a preallocated
+mask view that is not continuous in memory; the USAC flags and the UsacParams form copy an N x 1
+CV_8U mask into the caller's array (a 1 x N mask becomes N x 1, a view of the right size is written
+in place, a `std::vector<int>` receives the values converted); any other preallocated mask is
+replaced by an N x 1 CV_8U one.
+
+Differences from `cv::findEssentialMat` and `cv::recoverPose` that a caller may notice:
 - invalid input (fewer than 5 points, non-finite coordinates, points more than 1e8 focal lengths
   from the principal point, a singular camera matrix or one with a negative focal length, prob
   outside (0, 1), ...) raises cv::Exception naming the argument, where OpenCV may assert, crash or
@@ -37,6 +63,21 @@ Differences from `cv::findEssentialMat` that a caller may notice:
   fraction s of outlier-free samples may draw maxIters / s samples (see EssentialParams::maxIters);
 - the returned E is refined on all points by IRLS (set EssentialParams::refine = false in the
   module's own overload to skip this), and the mask is that of the refined E;
+- LMEDS derives its threshold from the median error as OpenCV does, with OpenCV's floor of 0.001
+  normalised units; a solver whose sample is as large as the point set (robust on 10 points) uses
+  the finite-sample correction of one spare point instead of dividing by zero;
+- recoverPose() from E (without distanceThresh) counts every point in front of both cameras:
+  OpenCV's overloads ignore points farther than 50 baselines, so that in a deep scene seen from a
+  short baseline the sign of t is arbitrary there; the distanceThresh overload honours the caller's
+  threshold as OpenCV does (DLT triangulation, OpenCV's cheirality test), so passing 50 reproduces
+  OpenCV; its distanceThresh must be positive (+inf: no cut), where OpenCV counts no point;
+- recoverPose() reads a CV_32F E (OpenCV 4.6 fails on one with a type mismatch inside its
+  triangulation); R, t and E may be noArray() (OpenCV asserts);
+- recoverPose()'s two-camera form has no 50-baseline cut either; when no essential matrix is found
+  it returns 0 with E empty, R = I and t = 0, and with exactly five points it keeps, of the several
+  solutions, the one with the most points in front (OpenCV asserts in both cases);
+- a failed estimate always leaves an all-zero N x 1 mask (OpenCV's RANSAC leaves the mask it
+  allocated as it was, its UsacParams form leaves the caller's mask untouched);
 - the USAC method flags and the UsacParams overload map onto the module's own engine (adaptive
   MSAC with IRLS local optimisation, PROSAC, SPRT) as in the tables below, in the spirit of
   OpenCV's usac::setParameters; OpenCV's graph-cut and sigma-consensus LO, MAGSAC++ scoring, NAPSAC
@@ -105,9 +146,12 @@ namespace essential {
 /** @brief Drop-in replacement for `cv::findEssentialMat(points1, points2, cameraMatrix, method,
 prob, threshold, maxIters, mask)`.
 
-@param points1 N >= 5 points of the first image: `std::vector<Point2f|Point2d>`, an N x 2
-single-channel or N x 1 two-channel Mat, CV_32F or CV_64F.
-@param points2 the N corresponding points of the second image, same layout.
+@param points1 N >= 5 points of the first image, in any layout `cv::findEssentialMat` takes with
+this method (the table in the module description): with RANSAC and LMEDS
+`std::vector<Point2f|Point2d>`, an N x 2 one-channel or N x 1 / 1 x N two-channel Mat of any depth;
+with the USAC flags also 2 x N, N x 3 and 3 x N (first two coordinates) arrays.
+@param points2 the N corresponding points of the second image (with RANSAC and LMEDS, with as many
+channels as points1).
 @param cameraMatrix 3 x 3 intrinsic matrix of both cameras (fx, fy non-zero).
 @param method `RANSAC`, `LMEDS` or a USAC flag (`USAC_DEFAULT`, ..., `USAC_MAGSAC`: the settings
 each stands for are in the module description's table).
@@ -115,7 +159,8 @@ each stands for are in the module description's table).
 @param threshold maximum Sampson distance, in pixels, of an inlier (RANSAC only); > 0.
 @param maxIters maximum number of RANSAC iterations in OpenCV's units (see
 EssentialParams::maxIters); > 0.
-@param mask output N x 1 CV_8U: 1 for the inliers of the returned E, 0 otherwise.
+@param mask output N x 1 CV_8U (a preallocated 1 x N CV_8U mask stays 1 x N with RANSAC and LMEDS,
+as in OpenCV): 1 for the inliers of the returned E, 0 otherwise.
 @return E as a 3 x 3 CV_64F Mat; with exactly five points, all the distinct solutions found, stacked
 as a 3n x 3 Mat; an empty Mat (and an all-zero mask) when no essential matrix is found.
 @throws cv::Exception for invalid arguments, with a message that names the argument.
@@ -143,7 +188,8 @@ CV_EXPORTS Mat findEssentialMatIter(InputArray points1, InputArray points2, doub
 /** @overload Two cameras, each with its own distortion.
 
 As in OpenCV, the points are undistorted with their own camera, then mapped through the mean of the
-two camera matrices, whose focal lengths also convert the pixel threshold.
+two camera matrices, whose focal lengths also convert the pixel threshold. As cv::undistortPoints,
+this form takes CV_32F or CV_64F points only, N x 2, 2 x N, N x 1 or 1 x N, continuous in memory.
 */
 CV_EXPORTS Mat findEssentialMatIter(InputArray points1, InputArray points2,
                                     InputArray cameraMatrix1, InputArray distCoeffs1,
@@ -158,7 +204,9 @@ threshold, maxIterations, randomGeneratorState, score (MSAC or LMedS), sampler (
 the NAPSAC samplers raise StsNotImplemented naming the option), loMethod / loIterations /
 loSampleSize (IRLS local optimisation); isParallel and neighborsSearch cannot change the result and
 are ignored. Invalid values raise StsBadArg naming the field. As in OpenCV, the points are
-undistorted with each camera's own coefficients.
+undistorted with each camera's own coefficients when there are any (then read as the two-camera
+form reads them, a view copied first), and read as with the USAC flags otherwise; the mask is
+N x 1.
 */
 CV_EXPORTS Mat findEssentialMatIter(InputArray points1, InputArray points2,
                                     InputArray cameraMatrix1, InputArray cameraMatrix2,
@@ -167,11 +215,13 @@ CV_EXPORTS Mat findEssentialMatIter(InputArray points1, InputArray points2,
 
 /** @brief The module's own overload: every setting, and an optional report.
 
-@param points1 points of the first image (as above).
-@param points2 points of the second image (as above).
+@param points1 points of the first image, in any layout a drop-in overload takes (read as with the
+USAC flags, which take them all).
+@param points2 points of the second image.
 @param cameraMatrix 3 x 3 intrinsic matrix of both cameras.
 @param params solver, scoring, confidence, threshold, iteration cap, seed, refinement.
-@param mask output N x 1 CV_8U inlier mask, as above.
+@param mask output N x 1 CV_8U inlier mask (copied into the caller's array, as with the USAC
+flags).
 @param report if not null, filled with R, t, counts and timings.
 @return E (3 x 3 CV_64F; 3n x 3 for exactly five points), or an empty Mat on failure.
 */
@@ -185,16 +235,21 @@ Decomposes E by SVD into its two rotations and the translation direction, and ch
 (R, +-t) candidates the one that puts the most correspondences in front of both cameras. Unlike
 OpenCV 4.6, which ignores points farther than 50 baselines (so that in a deep scene seen from a
 short baseline no point counts and the sign of t is arbitrary), every point with positive depth in
-both views counts.
+both views counts. To get OpenCV's cut, call the distanceThresh overload with 50.
 
-@param E essential matrix, 3 x 3.
-@param points1 points of the first image (layouts as findEssentialMatIter()).
+@param E essential matrix: 3 x 3, or its nine entries in one continuous array (1 x 9, 9 x 1), as
+OpenCV reads it; CV_32F or CV_64F (OpenCV 4.6 fails on CV_32F).
+@param points1 points of the first image, as cv::recoverPose reads them: a vector of 2D points, an
+N x 2 one-channel or N x 1 / 1 x N two-channel matrix of any depth, views included, both arrays
+with the same number of channels.
 @param points2 points of the second image.
 @param cameraMatrix 3 x 3 intrinsic matrix.
-@param R output 3 x 3 CV_64F rotation from view 1 to view 2.
-@param t output 3 x 1 CV_64F unit translation.
-@param mask in/out: if given, only its non-zero points are used, and on return it marks the points
-used that lie in front of both cameras for the chosen pose.
+@param R output 3 x 3 CV_64F rotation from view 1 to view 2 (may be noArray()).
+@param t output 3 x 1 CV_64F unit translation (may be noArray()).
+@param mask in/out: if given (a continuous CV_8U vector, one entry per point), only its non-zero
+points are used; on return it is N x 1 CV_8U and keeps its value at the points used that lie in
+front of both cameras for the chosen pose, 0 elsewhere; if empty, it is created with 255 at those
+points.
 @return the number of (masked) points in front of both cameras.
 */
 CV_EXPORTS int recoverPose(InputArray E, InputArray points1, InputArray points2,
@@ -204,6 +259,57 @@ CV_EXPORTS int recoverPose(InputArray E, InputArray points1, InputArray points2,
 /** @overload The camera matrix is [focal 0 pp.x; 0 focal pp.y; 0 0 1]. */
 CV_EXPORTS int recoverPose(InputArray E, InputArray points1, InputArray points2, OutputArray R,
                            OutputArray t, double focal = 1.0, Point2d pp = Point2d(0, 0),
+                           InputOutputArray mask = noArray());
+
+/** @overload With OpenCV's distance cut and the triangulated points.
+
+The caller's distanceThresh is honoured: as `cv::recoverPose`, a point counts for a pose when its
+linear (DLT) triangulation, the method of `cv::triangulatePoints`, has positive depth below
+distanceThresh (in units of the baseline, |t| = 1) in both views. OpenCV's other overloads use
+distanceThresh = 50; the module's do not cut at all. This form costs a 4 x 4 SVD per point and
+candidate pose, as OpenCV's does.
+
+@param distanceThresh > 0; +inf keeps OpenCV's DLT test without a cut. NaN or <= 0 raise
+StsBadArg (OpenCV then counts no point).
+@param triangulatedPoints output 4 x N CV_64F homogeneous points of the chosen pose, in the first
+camera's frame (X2 = R X1 + t): each column the DLT solution of unit norm, with W >= 0 (OpenCV's
+columns are also of unit norm, with the sign its SVD gives).
+*/
+CV_EXPORTS int recoverPose(InputArray E, InputArray points1, InputArray points2,
+                           InputArray cameraMatrix, OutputArray R, OutputArray t,
+                           double distanceThresh, InputOutputArray mask = noArray(),
+                           OutputArray triangulatedPoints = noArray());
+
+/** @overload Estimates E from two cameras with distortion, then recovers the pose.
+
+As `cv::recoverPose`: the points are undistorted with their own camera (and read as
+cv::undistortPoints reads them: CV_32F or CV_64F, N x 2, 2 x N, N x 1 or 1 x N, continuous), E is
+estimated as by the two-camera findEssentialMatIter() with the same method, prob and threshold,
+its inlier mask written into `mask` (if given), and the pose recovered from the points that mask
+marks (all points when no mask is given). Unlike OpenCV, there is no 50-baseline cut; when no
+essential matrix is found the call returns 0 with E empty, R = I and t = 0 (OpenCV asserts); with
+exactly five points, of the several solutions the one with the most points in front is kept
+(OpenCV asserts).
+
+@param points1 points of the first image.
+@param points2 points of the second image.
+@param cameraMatrix1 camera matrix of the first view.
+@param distCoeffs1 its distortion coefficients (4, 5, 8, 12 or 14, or empty).
+@param cameraMatrix2 camera matrix of the second view.
+@param distCoeffs2 its distortion coefficients.
+@param E output 3 x 3 CV_64F essential matrix.
+@param R output rotation, as above.
+@param t output unit translation, as above.
+@param method RANSAC, LMEDS or a USAC flag, as findEssentialMatIter().
+@param prob confidence in (0, 1).
+@param threshold inlier threshold in pixels (converted with the mean focal length of the cameras).
+@param mask output N x 1 CV_8U: 1 at the inliers of E in front of both cameras, 0 elsewhere.
+@return the number of (masked) points in front of both cameras.
+*/
+CV_EXPORTS int recoverPose(InputArray points1, InputArray points2, InputArray cameraMatrix1,
+                           InputArray distCoeffs1, InputArray cameraMatrix2, InputArray distCoeffs2,
+                           OutputArray E, OutputArray R, OutputArray t, int method = cv::RANSAC,
+                           double prob = 0.999, double threshold = 1.0,
                            InputOutputArray mask = noArray());
 
 //! @}

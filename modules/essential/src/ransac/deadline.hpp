@@ -20,13 +20,28 @@ struct Deadline
     bool active = false;
     Clock::time_point end;
 
-    /** Active, ending `ms` from now (already passed when ms <= 0). */
+    /** Active, ending `ms` from now (already passed when ms <= 0 or NaN). A deadline beyond the
+    clock's range (about 292 years of nanoseconds from the clock's epoch; any `ms` from about
+    9e12, including +inf) saturates at the largest time point, which is never passed: converting
+    such a duration to the clock's 64-bit count would be undefined behaviour. */
     static Deadline after(double ms)
     {
         Deadline d;
         d.active = true;
-        d.end = Clock::now() + std::chrono::duration_cast<Clock::duration>(
-                                   std::chrono::duration<double, std::milli>(ms));
+        const Clock::time_point now = Clock::now();
+        if (!(ms > 0)) {
+            d.end = now;
+            return d;
+        }
+        typedef std::chrono::duration<double, std::milli> Millis;
+        const double left =
+            std::chrono::duration_cast<Millis>(Clock::time_point::max() - now).count();
+        // Compare in double before converting: ms < left guarantees the cast below fits (the
+        // double nearest to `left` may round up, hence the margin of one part in 1e9).
+        if (ms < left * (1.0 - 1e-9))
+            d.end = now + std::chrono::duration_cast<Clock::duration>(Millis(ms));
+        else
+            d.end = Clock::time_point::max();
         return d;
     }
     bool passed() const { return active && Clock::now() >= end; }

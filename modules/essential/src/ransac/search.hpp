@@ -69,7 +69,8 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
 
 /** LMedS as cv::findEssentialMat's LMEDS: a fixed number of samples for an assumed outlier ratio of
 0.45, the hypothesis with the least median squared Sampson error wins, and the inlier threshold is
-2.5 * 1.4826 * (1 + 5 / (N - 5)) * sqrt(median). */
+max(2.5 * 1.4826 * (1 + 5 / max(N - p, 1)) * sqrt(median), 0.001), p the solver's sample size
+(OpenCV: p = 5 and the same floor of 0.001 normalised units). */
 SearchResult searchLmeds(const Problem& problem, EssentialSolver& solver, RNG& rng,
                          const SearchSettings& settings);
 

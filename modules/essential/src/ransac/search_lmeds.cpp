@@ -16,6 +16,13 @@ namespace cv {
 namespace essential {
 namespace ransac {
 
+namespace {
+
+/** OpenCV 4.6's floor on the LMedS threshold, in normalised units. */
+constexpr double kLmedsMinThreshold = 0.001;
+
+} // namespace
+
 SearchResult searchLmeds(const Problem& problem, EssentialSolver& solver, RNG& rng,
                          const SearchSettings& settings)
 {
@@ -59,11 +66,16 @@ SearchResult searchLmeds(const Problem& problem, EssentialSolver& solver, RNG& r
         }
     }
     if (!result.found) return result;
-    const double sigma =
-        2.5 * 1.4826 * (1.0 + 5.0 / (n - buffer.sampleSize)) * std::sqrt(bestMedian);
-    // A perfect fit (noise-free data) would give a zero threshold and no inliers; keep a floor at
-    // the round-off level of normalised coordinates.
-    result.threshold = std::max(sigma, 1e-10);
+    // Rousseeuw's robust standard deviation from the median, with the finite-sample correction
+    // 1 + 5 / (n - p), p the sample size, and OpenCV's 2.5 sigma cut. With n == p (a solver whose
+    // sample is every point, e.g. robust on 10 points) the correction is undefined; it is taken at
+    // its largest finite value, that of n - p = 1.
+    const int surplus = std::max(1, n - buffer.sampleSize);
+    const double sigma = 2.5 * 1.4826 * (1.0 + 5.0 / surplus) * std::sqrt(bestMedian);
+    // As cv::findEssentialMat's LMedS (ptsetreg.cpp): the threshold is never below 0.001
+    // normalised units (half a pixel at f = 500), so that a near-perfect fit on noise-free data
+    // does not leave a threshold at the round-off level that rejects true inliers.
+    result.threshold = std::max(sigma, kLmedsMinThreshold);
     std::vector<uchar> mask(static_cast<size_t>(n));
     result.inliers = inlierMask(result.E, problem, result.threshold, mask.data());
     return result;

@@ -67,10 +67,12 @@ struct CV_EXPORTS EssentialParams
     /** The search loop: ENGINE_ADAPTIVE (default), ENGINE_PREEMPTIVE or ENGINE_OPENCV. */
     int engine = ENGINE_ADAPTIVE;
 
-    /** Time budget of the whole call in milliseconds; 0 (default) for none. With a budget the
-    search returns the best model found when the time left is what the final refinement needs
-    (estimated from the number of points), so that the call as a whole takes about this long.
-    Honoured by ENGINE_ADAPTIVE and ENGINE_PREEMPTIVE; ENGINE_OPENCV raises StsNotImplemented. */
+    /** Time budget of the whole call in milliseconds; 0 (default) or +inf for none. With a budget
+    the search returns the best model found when the time left is what the final refinement needs
+    (estimated from the number of points), so that the call as a whole takes about this long. Any
+    positive finite value is a budget; one beyond the steady clock's range (about 9e12 ms) never
+    runs out. Negative values and NaN raise StsBadArg. Honoured by ENGINE_ADAPTIVE and
+    ENGINE_PREEMPTIVE; ENGINE_OPENCV raises StsNotImplemented for a budget. */
     double timeBudgetMs = 0;
 
     /** ENGINE_PREEMPTIVE: number M of hypotheses generated up front. 0 (default): chosen at run

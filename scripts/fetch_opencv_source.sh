@@ -29,6 +29,8 @@ set -euo pipefail
 
 die() {
     echo "fetch_opencv_source.sh: $*" >&2
+    echo "fetch_opencv_source.sh: the ctest entries opencv_calib3d/* need this source; configure" \
+        "with -DESSENTIAL_OPENCV_OWN_TESTS=OFF to leave them out" >&2
     exit 1
 }
 
@@ -73,7 +75,8 @@ EOF
         -o "Dir::State::Lists=$apt_dir/lists"
         -o "Dir::Cache=$apt_dir/cache")
     echo "fetch_opencv_source.sh: apt-get update (deb-src, private lists in $apt_dir)" >&2
-    apt-get "${apt_options[@]}" -q update >&2 ||
+    # --error-on=any: a list that cannot be fetched is an error, not a warning.
+    apt-get "${apt_options[@]}" -q --error-on=any update >&2 ||
         die "apt-get update of the deb-src lists failed (no network, or the archive is unreachable)"
     uris=$(apt-get "${apt_options[@]}" --print-uris -q source "$source_package=$version" 2>&1) ||
         die "apt-get source $source_package=$version: the archive does not have this version: $uris"

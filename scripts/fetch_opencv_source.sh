@@ -50,7 +50,10 @@ if [[ -f "$stamp" && "$(cat "$stamp")" == "$source_package $version" ]]; then
     exit 0
 fi
 
-cache=${OPENCV_SOURCE_CACHE:-${XDG_CACHE_HOME:-$HOME/.cache}/opencv_essential/opencv-source}
+if [[ -z "${OPENCV_SOURCE_CACHE:-}" && -z "${XDG_CACHE_HOME:-}" && -z "${HOME:-}" ]]; then
+    die "no cache directory: set OPENCV_SOURCE_CACHE, XDG_CACHE_HOME or HOME"
+fi
+cache=${OPENCV_SOURCE_CACHE:-${XDG_CACHE_HOME:-${HOME:-}/.cache}/opencv_essential/opencv-source}
 files_dir="$cache/$source_package-$version"
 manifest="$files_dir/SHA256SUMS"
 mkdir -p "$files_dir"
@@ -95,8 +98,9 @@ EOF
     cached_files_valid || die "the downloaded files do not match their SHA256 ($manifest)"
 fi
 
-orig=$(cd "$files_dir" && ls "${source_package}"_*.orig.tar.* 2>/dev/null | head -n1)
-debian=$(cd "$files_dir" && ls "${source_package}"_*.debian.tar.* 2>/dev/null | head -n1)
+# The manifest lists the files by name (second column).
+orig=$(awk '$2 ~ /\.orig\.tar\./ { print $2; exit }' "$manifest")
+debian=$(awk '$2 ~ /\.debian\.tar\./ { print $2; exit }' "$manifest")
 [[ -n "$orig" && -n "$debian" ]] || die "no upstream or Debian tarball in $files_dir"
 
 # The Debian patches that change an extracted file, and every file they change.

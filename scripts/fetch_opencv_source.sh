@@ -15,11 +15,12 @@
 #   apt-get --print-uris source opencv=VERSION
 #                        gives each file of that exact version with its SHA256 from the signed index;
 #   apt-helper download-file URI FILE SHA256:...
-#                        downloads one file and checks its hash; only the main upstream tarball
-#                        (74 MB) and the Debian tarball (36 kB) are taken, not the contrib tarball.
+#                        downloads one file and checks its hash; only the .dsc, the main upstream
+#                        tarball (74 MB) and the Debian tarball (36 kB) are taken, not the
+#                        contrib tarball (54 MB). dpkg-source (dpkg-dev) is not needed.
 # The tarballs stay in ${OPENCV_SOURCE_CACHE:-${XDG_CACHE_HOME:-$HOME/.cache}/opencv_essential/
-# opencv-source}, outside the clone: a warm run verifies their hashes and extracts (about 10 s)
-# without the network; DEST is left as is when it already holds the same version.
+# opencv-source}, outside the clone: a warm run verifies their hashes and extracts without the
+# network (8 s on a 2-core machine); DEST is left as is when it already holds the same version.
 # The Debian patches (debian/patches/series) that change an extracted file are applied with patch
 # -p1, in the series' order; the other files they change are extracted too, so that they apply
 # whole (for 4.6.0+dfsg-12: one patch, which changes a comment in core/private.hpp).

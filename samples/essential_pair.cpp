@@ -535,7 +535,7 @@ int run(int argc, char** argv)
                                     {"inlier_ratio", n > 0 ? double(cvInliers) / n : 0.0},
                                     {"points_in_front", cvInFront}};
         if (cvFound) {
-            const cv::Mat cvEn = cvE / cv::norm(cvE) * std::sqrt(2.0);
+            const cv::Mat cvEn = cvE / cv::norm(cvE); // unit norm, as ours
             reference["E"] = matrixJson(cv::Matx33d(cvEn));
             reference["R"] = matrixJson(cv::Matx33d(cvR));
             reference["t"] = vectorJson(cv::Vec3d(cvT));
@@ -601,7 +601,7 @@ int run(int argc, char** argv)
     std::printf("\ncv::findEssentialMat + cv::recoverPose (RANSAC, prob 0.999, threshold %g px)\n",
                 options.threshold);
     if (cvFound) {
-        std::printf("E =\n%s", formatMatrix(cvE / cv::norm(cvE) * std::sqrt(2.0)).c_str());
+        std::printf("E =\n%s", formatMatrix(cvE / cv::norm(cvE)).c_str());
         std::printf("R =\n%s", formatMatrix(cvR).c_str());
         std::printf("t =\n%s", formatMatrix(cvT.t()).c_str());
     } else {

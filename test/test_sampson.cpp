@@ -7,6 +7,7 @@
 #include "geometry/essential_parameterisation.hpp"
 #include "geometry/sampson.hpp"
 #include "geometry/so3.hpp"
+#include "geometry/symmetric_epipolar.hpp"
 #include "problem.hpp"
 #include "ransac/msac_score.hpp"
 
@@ -131,6 +132,59 @@ TEST(Sampson, ScoringAndTheJacobianUseTheSameDistance)
         ASSERT_TRUE(sampsonResidualAndJacobian(d, p1[i].x, p1[i].y, p2[i].x, p2[i].y, s, J));
         EXPECT_NEAR(s * s, reference, 1e-14 * reference) << i;
     }
+}
+
+TEST(SymmetricEpipolar, IsTheSumOfTheTwoPointToLineDistances)
+{
+    // d1 = distance of q2 to the line E q1 in image 2, d2 = distance of q1 to E^T q2 in image 1,
+    // computed here from the lines directly; OpenCV's USAC thresholds d1^2 + d2^2. It is at least
+    // four times the squared Sampson distance (1/D1 + 1/D2 >= 4 / (D1 + D2)).
+    std::mt19937_64 g(24);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    for (int trial = 0; trial < 500; ++trial) {
+        const Eigen::Matrix3d E = randomEssential(g);
+        const Eigen::Vector3d q1(u(g), u(g), 1.0), q2(u(g), u(g), 1.0);
+        const Eigen::Vector3d l2 = E * q1, l1 = E.transpose() * q2;
+        const double d1 = std::abs(l2.dot(q2)) / l2.head<2>().norm();
+        const double d2 = std::abs(l1.dot(q1)) / l1.head<2>().norm();
+        const double got =
+            symmetricEpipolarSquared(EssentialEntries(E), q1.x(), q1.y(), q2.x(), q2.y());
+        const double expected = d1 * d1 + d2 * d2;
+        EXPECT_NEAR(got, expected, 1e-12 * expected) << "trial " << trial;
+        EXPECT_GE(got * (1 + 1e-12), 4.0 * sampsonSquared(E, q1.x(), q1.y(), q2.x(), q2.y()));
+    }
+}
+
+TEST(SymmetricEpipolar, ScoringUsesTheProblemsDistance)
+{
+    std::mt19937_64 g(25);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    std::vector<cv::Point2d> p1(100), p2(100);
+    for (size_t i = 0; i < p1.size(); ++i) {
+        p1[i] = cv::Point2d(u(g), u(g));
+        p2[i] = cv::Point2d(u(g), u(g));
+    }
+    const Eigen::Matrix3d E = randomEssential(g);
+    cv::Matx33d Ecv;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            Ecv(i, j) = E(i, j);
+    const auto symmetric =
+        cv::essential::makeProblem(p1, p2, 0.05, cv::essential::DISTANCE_SYMMETRIC_EPIPOLAR);
+    std::vector<double> d(p1.size());
+    cv::essential::ransac::squaredDistances(Ecv, symmetric, d.data());
+    std::vector<uchar> mask(p1.size());
+    const int inliers = cv::essential::ransac::inlierMask(Ecv, symmetric, 0.05, mask.data());
+    int expected = 0;
+    for (size_t i = 0; i < p1.size(); ++i) {
+        const double ref =
+            symmetricEpipolarSquared(EssentialEntries(E), p1[i].x, p1[i].y, p2[i].x, p2[i].y);
+        EXPECT_NEAR(d[i], ref, 1e-14 * ref);
+        EXPECT_EQ(mask[i], ref <= 0.05 * 0.05 ? 1 : 0);
+        expected += ref <= 0.05 * 0.05;
+    }
+    EXPECT_EQ(inliers, expected);
+    EXPECT_GT(inliers, 0);
 }
 
 } // namespace

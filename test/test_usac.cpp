@@ -305,7 +305,7 @@ struct FlagCase
 TEST(UsacFlags, EachFlagRunsItsDocumentedSettings)
 {
     // The drop-in overload with a USAC flag returns exactly what the module's overload returns
-    // with the settings essential.hpp lists for it.
+    // with the settings essential.hpp lists for it (the symmetric epipolar distance included).
     SceneConfig cfg;
     cfg.numPoints = 300;
     cfg.inlierRatio = 0.6;
@@ -327,6 +327,7 @@ TEST(UsacFlags, EachFlagRunsItsDocumentedSettings)
         params.maxIters = 700;
         params.loIterations = c.loIterations;
         params.sampler = c.sampler;
+        params.distance = cv::essential::DISTANCE_SYMMETRIC_EPIPOLAR; // OpenCV's USAC distance
         cv::essential::EssentialReport r;
         const cv::Mat b =
             cv::essential::findEssentialMatIter(s.px1, s.px2, K, params, maskParams, &r);
@@ -391,6 +392,7 @@ protected:
         e.loSampleSize = p.loMethod == cv::LOCAL_OPTIM_NULL ? 0 : p.loSampleSize;
         e.sampler = p.sampler;
         e.method = p.score == cv::SCORE_METHOD_LMEDS ? cv::LMEDS : cv::RANSAC;
+        e.distance = cv::essential::DISTANCE_SYMMETRIC_EPIPOLAR; // OpenCV's USAC distance
         return e;
     }
     /** The UsacParams overload agrees with its documented equivalent (the two normalise the points

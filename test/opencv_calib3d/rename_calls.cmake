@@ -2,9 +2,9 @@
 #
 # Writes a copy of one of OpenCV's calib3d test files in which every call of cv::findEssentialMat
 # goes to cv::essential::findEssentialMatIter and every call of cv::recoverPose to
-# essential_drop_in::recoverPose (drop_in_calls.hpp: the module's recoverPose overloads, plus the
-# one OpenCV overload the module lacks), and which includes drop_in_calls.hpp after the test's own
-# precompiled header. A call is the name followed by '(', bare (the tests are inside
+# cv::essential::recoverPose (the module has all four overloads of OpenCV 4.6), and which includes
+# opencv2/essential.hpp after the test's own precompiled header. A call is the name followed by
+# '(', bare (the tests are inside
 # `using namespace cv`) or as cv::name; the names inside strings and comments are left alone
 # because there they are never followed by '('. Fails when the file has no such call or when a
 # call is left over, so that a change in OpenCV's tests cannot make this copy test OpenCV again.
@@ -28,7 +28,7 @@ macro(rename_call name replacement)
 endmacro()
 
 rename_call(findEssentialMat cv::essential::findEssentialMatIter)
-rename_call(recoverPose essential_drop_in::recoverPose)
+rename_call(recoverPose cv::essential::recoverPose)
 if(calls EQUAL 0)
   message(FATAL_ERROR "${INPUT} calls neither findEssentialMat nor recoverPose")
 endif()
@@ -42,7 +42,7 @@ string(FIND "${text}" "${precomp}" at)
 if(at EQUAL -1)
   message(FATAL_ERROR "${INPUT} does not include test_precomp.hpp")
 endif()
-string(REPLACE "${precomp}" "${precomp}\n#include \"drop_in_calls.hpp\"" text "${text}")
+string(REPLACE "${precomp}" "${precomp}\n#include \"opencv2/essential.hpp\"" text "${text}")
 
 file(WRITE "${OUTPUT}.partial" "${text}")
 file(RENAME "${OUTPUT}.partial" "${OUTPUT}")

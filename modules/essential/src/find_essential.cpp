@@ -37,9 +37,18 @@ double msSince(int64 start)
     return double(getTickCount() - start) * 1000.0 / getTickFrequency();
 }
 
+/** The scale of the E the public functions return: unit Frobenius norm (singular values
+1/sqrt(2), 1/sqrt(2), 0), as cv::findEssentialMat returns it (OpenCV's own accuracy test checks
+those singular values). Inside the module E = [t]x R has norm sqrt(2). */
+Matx33d unitNorm(const Matx33d& E)
+{
+    const double n = norm(E);
+    return n > 0 ? E * (1.0 / n) : E;
+}
+
 Mat toMat(const Matx33d& E)
 {
-    return Mat(E, true);
+    return Mat(unitNorm(E), true);
 }
 
 /** To list the solutions of a five-point problem (what cv::findEssentialMat returns for exactly
@@ -109,7 +118,8 @@ Mat solveExactlyFive(const Problem& problem, EssentialSolver& solver, RNG& rng,
     for (size_t s = 0; s < found.size(); ++s)
         for (int i = 0; i < 3; ++i)
             for (int j = 0; j < 3; ++j)
-                stacked.at<double>(3 * static_cast<int>(s) + i, j) = found[s](i, j);
+                stacked.at<double>(3 * static_cast<int>(s) + i, j) =
+                    found[s](i, j) / found[s].norm();
     return stacked;
 }
 
@@ -282,7 +292,7 @@ Mat estimate(const Problem& problem, const EssentialParams& params, OutputArray 
         return Mat();
     }
     rep.success = true;
-    rep.E = E;
+    rep.E = unitNorm(E);
     if (report) {
         rep.rotationOnlyFraction =
             geometry::rotationOnlyFraction(problem.p1.data(), problem.p2.data(), inliers.data(), n,
@@ -356,6 +366,8 @@ EssentialParams dropInParams(int method, double prob, double threshold, int maxI
     p.threshold = method == LMEDS ? 1.0 : threshold;
     p.maxIters = maxIters;
     applyUsacFlag(method, p);
+    // OpenCV 4.6's USAC thresholds the symmetric epipolar distance for essential matrices.
+    if (method >= USAC_DEFAULT) p.distance = DISTANCE_SYMMETRIC_EPIPOLAR;
     return p;
 }
 
@@ -438,7 +450,15 @@ EssentialParams usacParams(const UsacParams& usac)
     p.threshold = p.method == LMEDS ? 1.0 : usac.threshold;
     p.maxIters = usac.maxIterations;
     p.seed = static_cast<uint64>(static_cast<unsigned>(usac.randomGeneratorState));
+    p.distance = DISTANCE_SYMMETRIC_EPIPOLAR; // as OpenCV's USAC (LMedS ranks by Sampson)
     return p;
+}
+
+/** The distance the problem's threshold applies to: LMedS ranks by the Sampson distance whatever
+was asked (as OpenCV's LMEDS), everything else uses EssentialParams::distance. */
+EssentialDistance inlierDistance(const EssentialParams& params)
+{
+    return params.method == LMEDS ? DISTANCE_SAMPSON : params.distance;
 }
 
 Mat estimateWithCamera(InputArray points1, InputArray points2, const Matx33d& K,
@@ -453,7 +473,8 @@ Mat estimateWithCamera(InputArray points1, InputArray points2, const Matx33d& K,
     checkNormalisedPoints(n1, "points1");
     checkNormalisedPoints(n2, "points2");
     Problem problem =
-        makeProblem(std::move(n1), std::move(n2), normalisedThreshold(params.threshold, meanFocal));
+        makeProblem(std::move(n1), std::move(n2), normalisedThreshold(params.threshold, meanFocal),
+                    inlierDistance(params));
     return estimate(problem, params, mask, maskWriting, report, start);
 }
 
@@ -499,7 +520,8 @@ Mat estimateTwoCameras(InputArray points1, InputArray points2, InputArray camera
     if (normalised2) *normalised2 = n2;
     const double meanFocal = 0.25 * (K1(0, 0) + K1(1, 1) + K2(0, 0) + K2(1, 1));
     Problem problem =
-        makeProblem(std::move(n1), std::move(n2), normalisedThreshold(params.threshold, meanFocal));
+        makeProblem(std::move(n1), std::move(n2), normalisedThreshold(params.threshold, meanFocal),
+                    inlierDistance(params));
     return estimate(problem, params, mask, maskWriting, nullptr, start);
 }
 
@@ -606,6 +628,11 @@ Mat findEssentialMatIter(InputArray points1, InputArray points2, InputArray came
     if (params.sampler == SAMPLING_PROSAC && params.engine != ENGINE_ADAPTIVE)
         CV_Error(Error::StsNotImplemented,
                  "EssentialParams::sampler SAMPLING_PROSAC needs ENGINE_ADAPTIVE");
+    const int distance = rawEnum(params.distance);
+    if (distance != DISTANCE_SAMPSON && distance != DISTANCE_SYMMETRIC_EPIPOLAR)
+        CV_Error(Error::StsBadArg, "EssentialParams::distance must be DISTANCE_SAMPSON or "
+                                   "DISTANCE_SYMMETRIC_EPIPOLAR, got " +
+                                       std::to_string(distance));
     checkConfidence(params.confidence);
     checkThreshold(params.threshold);
     checkMaxIters(params.maxIters);

@@ -21,6 +21,14 @@ namespace {
 /** OpenCV 4.6's floor on the LMedS threshold, in normalised units. */
 constexpr double kLmedsMinThreshold = 0.001;
 
+/** Squared medians below this (errors under 1e-6 normalised units, a thousandth of the threshold
+floor) are the same fit: round-off. It matters on noise-free data with N <= 9, where any solution of
+a sample fits its five points exactly and so has a median of zero, right or wrong: OpenCV's own
+accuracy test (Calib3d_FindEssentialMat) draws such problems (N = 6 and 9 among them), and a wrong
+root there left five inliers. Ties at this level go to the model that fits more points to round-off:
+the true E fits all of them, a wrong root its sample. */
+constexpr double kTiedMedian = 1e-12;
+
 } // namespace
 
 SearchResult searchLmeds(const Problem& problem, EssentialSolver& solver, RNG& rng,
@@ -45,6 +53,7 @@ SearchResult searchLmeds(const Problem& problem, EssentialSolver& solver, RNG& r
     }
     std::vector<double> errors(static_cast<size_t>(n));
     double bestMedian = HUGE_VAL;
+    int bestExact = 0;
     for (; result.iterations < samples; ++result.iterations) {
         if ((result.iterations & 7) == 7 && settings.deadline.passed()) break;
         const int count = buffer.drawAndSolve(problem, solver, rng);
@@ -57,12 +66,18 @@ SearchResult searchLmeds(const Problem& problem, EssentialSolver& solver, RNG& r
             for (double& e : errors)
                 if (std::isnan(e)) e = HUGE_VAL;
             std::nth_element(errors.begin(), errors.begin() + n / 2, errors.end());
-            const double median = errors[static_cast<size_t>(n / 2)];
-            if (median < bestMedian) {
-                bestMedian = median;
-                result.E = buffer.solutions[h];
-                result.found = true;
-            }
+            const double median = std::max(errors[static_cast<size_t>(n / 2)], kTiedMedian);
+            if (median > bestMedian) continue;
+            // Ties at the round-off level are broken by how many points fit to round-off (counted
+            // only for a model that may win).
+            int exact = 0;
+            for (double e : errors)
+                exact += e <= kTiedMedian;
+            if (median == bestMedian && exact <= bestExact) continue;
+            bestMedian = median;
+            bestExact = exact;
+            result.E = buffer.solutions[h];
+            result.found = true;
         }
     }
     if (!result.found) return result;

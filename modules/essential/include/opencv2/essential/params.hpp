@@ -165,7 +165,7 @@ struct CV_EXPORTS EssentialParams
 struct CV_EXPORTS EssentialReport
 {
     bool success = false;         //!< an essential matrix was found
-    Matx33d E = Matx33d::zeros(); //!< the returned essential matrix (Frobenius norm sqrt(2))
+    Matx33d E = Matx33d::zeros(); //!< the returned essential matrix (unit Frobenius norm)
     Matx33d R = Matx33d::eye();   //!< rotation from view 1 to view 2 (if poseRecovered)
     Vec3d t = Vec3d(0, 0, 0);     //!< unit translation, X2 = R X1 + s t (if poseRecovered)
     bool poseRecovered = false;   //!< R and t were computed

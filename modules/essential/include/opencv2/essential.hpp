@@ -101,6 +101,13 @@ verifies with SPRT too:
 | `USAC_MAGSAC`   | MSAC, uniform, LO 5        | MAGSAC++ score, sigma-consensus LO           |
 | `USAC_FM_8PTS`  | as USAC_DEFAULT            | 8-point fundamental-matrix solver            |
 
+Inlier distance: RANSAC and LMEDS compare the Sampson distance with the threshold, as OpenCV
+does; every USAC flag and the UsacParams form compare the symmetric epipolar distance
+sqrt(d1^2 + d2^2) (each point's distance to its epipolar line), as OpenCV 4.6's USAC does for
+essential matrices (EssentialParams::distance = DISTANCE_SYMMETRIC_EPIPOLAR). The latter is at least
+twice the former, so at the same threshold the USAC flags mark fewer inliers, in both libraries.
+The returned E has unit Frobenius norm (singular values 1/sqrt(2), 1/sqrt(2), 0), as OpenCV's.
+
 Notes: USAC_PARALLEL runs on one thread and gives the same result as USAC_DEFAULT. USAC_MAGSAC
 scores by MSAC with the given threshold (MAGSAC++'s marginalisation over noise scales is not
 implemented). USAC_FM_8PTS makes OpenCV fit an unconstrained 3 x 3 matrix with its 8-point
@@ -156,13 +163,15 @@ channels as points1).
 @param method `RANSAC`, `LMEDS` or a USAC flag (`USAC_DEFAULT`, ..., `USAC_MAGSAC`: the settings
 each stands for are in the module description's table).
 @param prob confidence in (0, 1).
-@param threshold maximum Sampson distance, in pixels, of an inlier (RANSAC only); > 0.
+@param threshold maximum distance, in pixels, of an inlier: Sampson distance for RANSAC, symmetric
+epipolar distance for the USAC flags (as OpenCV); unused by LMEDS; > 0.
 @param maxIters maximum number of RANSAC iterations in OpenCV's units (see
 EssentialParams::maxIters); > 0.
 @param mask output N x 1 CV_8U (a preallocated 1 x N CV_8U mask stays 1 x N with RANSAC and LMEDS,
 as in OpenCV): 1 for the inliers of the returned E, 0 otherwise.
-@return E as a 3 x 3 CV_64F Mat; with exactly five points, all the distinct solutions found, stacked
-as a 3n x 3 Mat; an empty Mat (and an all-zero mask) when no essential matrix is found.
+@return E as a 3 x 3 CV_64F Mat of unit Frobenius norm; with exactly five points, all the distinct
+solutions found, stacked as a 3n x 3 Mat; an empty Mat (and an all-zero mask) when no essential
+matrix is found.
 @throws cv::Exception for invalid arguments, with a message that names the argument.
 */
 CV_EXPORTS Mat findEssentialMatIter(InputArray points1, InputArray points2, InputArray cameraMatrix,

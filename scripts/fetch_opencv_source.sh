@@ -9,9 +9,10 @@
 #
 # apt-get does the work, with every directory it writes private to the cache below, so the system's
 # apt sources and lists are neither read nor changed and neither root nor sudo is needed:
-#   apt-get update       reads deb-src entries for bookworm, bookworm-updates and bookworm-security
-#                        from Debian's archive (the Debian archive host); the InRelease files are checked
-#                        against the system's Debian archive keyring;
+#   apt-get update       reads deb-src entries made from the system's own `deb` entries for its
+#                        release (bookworm, bookworm-updates, bookworm-security: the same archive
+#                        and keyring, /etc/apt/sources.list{,.d}), so the script names no server;
+#                        the InRelease files are checked against the keyring those entries name;
 #   apt-get --print-uris source opencv=VERSION
 #                        gives each file of that exact version with its SHA256 from the signed index;
 #   apt-helper download-file URI FILE SHA256:...
@@ -59,6 +60,69 @@ files_dir="$cache/$source_package-$version"
 manifest="$files_dir/SHA256SUMS"
 mkdir -p "$files_dir"
 
+# Writes to $1 a deb822 sources file with a deb-src entry for every `deb` entry of the system's apt
+# sources (one-line *.list and deb822 *.sources) whose suite is this release (VERSION_CODENAME of
+# /etc/os-release, or a suite starting with it, such as bookworm-security): the same URIs,
+# components and Signed-By. Fails when there is none.
+debsrc_entries() {
+    local codename out=$1
+    codename=$(. /etc/os-release && echo "${VERSION_CODENAME:-}")
+    [[ -n "$codename" ]] || die "no VERSION_CODENAME in /etc/os-release"
+    : >"$out"
+    local files=() f
+    [[ -r /etc/apt/sources.list ]] && files+=(/etc/apt/sources.list)
+    for f in /etc/apt/sources.list.d/*.list /etc/apt/sources.list.d/*.sources; do
+        [[ -r "$f" ]] && files+=("$f")
+    done
+    for f in "${files[@]}"; do
+        if [[ "$f" == *.sources ]]; then
+            # deb822: paragraphs of Field: value lines; a deb paragraph becomes a deb-src one.
+            awk -v cn="$codename" '
+                function flush() {
+                    if (types ~ /(^| )deb( |$)/ && uris != "" && suites != "") {
+                        n = split(suites, list, " "); keep = ""
+                        for (i = 1; i <= n; i++)
+                            if (list[i] == cn || index(list[i], cn "-") == 1) keep = keep " " list[i]
+                        if (keep != "") {
+                            print "Types: deb-src"; print "URIs: " uris; print "Suites:" keep
+                            print "Components: " comps
+                            if (signed != "") print "Signed-By: " signed
+                            print ""
+                        }
+                    }
+                    types = uris = suites = comps = signed = ""
+                }
+                /^[[:space:]]*#/ { next }
+                /^[[:space:]]*$/ { flush(); next }
+                { line = $0; sub(/^[^:]*:[[:space:]]*/, "", line) }
+                tolower($1) == "types:" { types = line }
+                tolower($1) == "uris:" { uris = line }
+                tolower($1) == "suites:" { suites = line }
+                tolower($1) == "components:" { comps = line }
+                tolower($1) == "signed-by:" { signed = line }
+                END { flush() }' "$f" >>"$out"
+        else
+            # One-line format: deb [options] URI SUITE COMPONENT...
+            awk -v cn="$codename" '
+                $1 != "deb" { next }
+                {
+                    opts = ""; i = 2
+                    if ($2 ~ /^\[/) { while ($i !~ /\]$/) { opts = opts " " $i; i++ } opts = opts " " $i; i++ }
+                    uri = $i; suite = $(i + 1); comps = ""
+                    for (j = i + 2; j <= NF; j++) comps = comps " " $j
+                    if (suite != cn && index(suite, cn "-") != 1) next
+                    signed = ""
+                    if (match(opts, /signed-by=[^] ]*/)) signed = substr(opts, RSTART + 10, RLENGTH - 10)
+                    print "Types: deb-src"; print "URIs: " uri; print "Suites: " suite
+                    print "Components:" comps
+                    if (signed != "") print "Signed-By: " signed
+                    print ""
+                }' "$f" >>"$out"
+        fi
+    done
+    [[ -s "$out" ]] || die "the system's apt sources have no deb entry for $codename to make deb-src entries from"
+}
+
 # True when every file of the manifest is present with its hash.
 cached_files_valid() {
     [[ -s "$manifest" ]] && (cd "$files_dir" && sha256sum --check --quiet --status SHA256SUMS)
@@ -67,13 +131,8 @@ cached_files_valid() {
 if ! cached_files_valid; then
     apt_dir="$cache/apt"
     mkdir -p "$apt_dir/lists/partial" "$apt_dir/cache/archives/partial" "$apt_dir/sources.list.d"
-    keyring=/usr/share/keyrings/debian-archive-keyring.gpg
-    [[ -r "$keyring" ]] || die "$keyring is missing (package debian-archive-keyring)"
-    cat >"$apt_dir/sources.list" <<EOF
-deb-src [signed-by=$keyring] http://the Debian archive host/debian bookworm main
-deb-src [signed-by=$keyring] http://the Debian archive host/debian bookworm-updates main
-deb-src [signed-by=$keyring] http://the Debian archive host/debian-security bookworm-security main
-EOF
+    : >"$apt_dir/sources.list"
+    debsrc_entries "$apt_dir/sources.list.d/debian-src.sources"
     apt_options=(-o "Dir::Etc::sourcelist=$apt_dir/sources.list"
         -o "Dir::Etc::sourceparts=$apt_dir/sources.list.d"
         -o "Dir::State::Lists=$apt_dir/lists"

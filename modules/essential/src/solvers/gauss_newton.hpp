@@ -31,6 +31,12 @@ struct GaussNewtonSettings
     /** Probability of reaching the true E on an outlier-free sample, for the engine's iteration
     count: 0.357 measured noise-free (above); test_solvers asserts it. */
     double successRate = 0.35;
+    /** Starts tried after R = I when it gave no solution in front of the cameras: the best of
+    StartRotations for the sample (0 to 4). */
+    int extraStarts = 0;
+    /** Return a solution only if it can put the sample in front of both cameras
+    (sampleIsInFront). */
+    bool requireCheirality = false;
 };
 
 /** The Gauss-Newton minimal solver. With five residuals and five parameters each step solves the
@@ -42,7 +48,9 @@ public:
         : IterativeMinimalSolver<GaussNewtonSettings>(settings)
     {
     }
-    int solve(const Point2d* x1, const Point2d* x2, RNG& rng, Matx33d* solutions) override;
+
+protected:
+    bool converge(geometry::EssentialPose& pose, const Point2d* x1, const Point2d* x2) override;
 };
 
 } // namespace solvers

@@ -30,6 +30,12 @@ struct LevenbergMarquardtSettings
     double maxLambda = 1e6;
     /** See GaussNewtonSettings::successRate: 0.401 measured noise-free. */
     double successRate = 0.4;
+    /** Starts tried after R = I when it gave no solution in front of the cameras: the best of
+    StartRotations for the sample (0 to 4). */
+    int extraStarts = 0;
+    /** Return a solution only if it can put the sample in front of both cameras
+    (sampleIsInFront). */
+    bool requireCheirality = false;
 };
 
 /** The LM minimal solver: damped Gauss-Newton steps (J^T J + lambda diag(J^T J)) d = -J^T r, a step
@@ -43,7 +49,9 @@ public:
         : IterativeMinimalSolver<LevenbergMarquardtSettings>(settings)
     {
     }
-    int solve(const Point2d* x1, const Point2d* x2, RNG& rng, Matx33d* solutions) override;
+
+protected:
+    bool converge(geometry::EssentialPose& pose, const Point2d* x1, const Point2d* x2) override;
 };
 
 } // namespace solvers

@@ -90,6 +90,9 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
     // the search draws the same samples whatever LO does).
     SampleBuffer inner(solver);
     RNG innerRng(rng.state ^ 0x5851f42d4c957f2dULL);
+    // kInnerSamples calls of a direct solver; an iterative one that solves a fraction s of clean
+    // samples gets kInnerSamples / s, the same expected number of hits.
+    const int innerSamples = sampleCap(kInnerSamples, solver.successRate());
 
     Score best;
     int needed = cap;
@@ -103,7 +106,7 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
             if (mask[i]) chosen.push_back(i);
         const int pool = static_cast<int>(chosen.size());
         if (pool < 2 * inner.sampleSize) return;
-        for (int k = 0; k < kInnerSamples; ++k) {
+        for (int k = 0; k < innerSamples; ++k) {
             drawUniformSample(innerRng, pool, inner.sampleSize, inner.indices.data());
             for (int i = 0; i < inner.sampleSize; ++i) {
                 inner.x1[i] = problem.p1[chosen[inner.indices[i]]];

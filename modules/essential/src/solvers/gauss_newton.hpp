@@ -30,13 +30,13 @@ struct GaussNewtonSettings
     double divergenceFactor = 1e3;
     /** Probability of reaching the true E on an outlier-free sample, for the engine's iteration
     count: 0.357 measured noise-free (above); test_solvers asserts it. */
-    double successRate = 0.35;
+    double successRate = 0.33;
     /** Starts tried after R = I when it gave no solution in front of the cameras: the best of
     StartRotations for the sample (0 to 4). */
-    int extraStarts = 0;
+    int extraStarts = 3;
     /** Return a solution only if it can put the sample in front of both cameras
     (sampleIsInFront). */
-    bool requireCheirality = false;
+    bool requireCheirality = true;
 };
 
 /** The Gauss-Newton minimal solver. With five residuals and five parameters each step solves the

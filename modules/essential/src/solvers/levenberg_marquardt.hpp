@@ -23,19 +23,19 @@ struct LevenbergMarquardtSettings
     /** Converged when the sum of squared algebraic residuals falls below this (see GN). */
     double convergedCost = 1e-14;
     /** Initial damping, relative to the diagonal of J^T J. */
-    double initialLambda = 1e-3;
+    double initialLambda = 1e-5;
     /** Give up when the damping grows beyond this: no descent direction left (a local minimum with
     a non-zero residual, which a minimal set only has when the start was bad or the sample is
     contaminated). */
     double maxLambda = 1e6;
     /** See GaussNewtonSettings::successRate: 0.401 measured noise-free. */
-    double successRate = 0.4;
+    double successRate = 0.27;
     /** Starts tried after R = I when it gave no solution in front of the cameras: the best of
     StartRotations for the sample (0 to 4). */
-    int extraStarts = 0;
+    int extraStarts = 3;
     /** Return a solution only if it can put the sample in front of both cameras
     (sampleIsInFront). */
-    bool requireCheirality = false;
+    bool requireCheirality = true;
 };
 
 /** The LM minimal solver: damped Gauss-Newton steps (J^T J + lambda diag(J^T J)) d = -J^T r, a step

@@ -62,17 +62,30 @@ private:
 normal of the plane through t that (R q1_i, q2_i) must span, c_i = (R q1_i x q2_i) / |...|, the
 true R makes the c_i coplanar (all orthogonal to t), so det(sum c_i c_i^T) is zero there. Unit
 normals weigh every point alike. Ranking by the smallest eigenvalue instead, or by its ratio to
-the middle one, chose worse starts (docs/SOLVERS.md). */
+the middle one, chose worse starts (docs/SOLVERS.md). Scalar code on the six distinct entries of
+the sum: it runs 36 times per call that needs extra starts. */
 inline double coplanarityCost(const Eigen::Matrix3d& R, const Point2d* x1, const Point2d* x2, int n)
 {
-    Eigen::Matrix3d S = Eigen::Matrix3d::Zero();
+    double s00 = 0, s01 = 0, s02 = 0, s11 = 0, s12 = 0, s22 = 0;
     for (int i = 0; i < n; ++i) {
-        const Eigen::Vector3d c = (R * Eigen::Vector3d(x1[i].x, x1[i].y, 1.0))
-                                      .cross(Eigen::Vector3d(x2[i].x, x2[i].y, 1.0));
-        const double c2 = c.squaredNorm();
-        if (c2 > 0.0) S.noalias() += (c / c2) * c.transpose();
+        const double u = x1[i].x, v = x1[i].y, x = x2[i].x, y = x2[i].y;
+        const double a0 = R(0, 0) * u + R(0, 1) * v + R(0, 2);
+        const double a1 = R(1, 0) * u + R(1, 1) * v + R(1, 2);
+        const double a2 = R(2, 0) * u + R(2, 1) * v + R(2, 2);
+        // c = a x (x, y, 1)
+        const double c0 = a1 - a2 * y, c1 = a2 * x - a0, c2 = a0 * y - a1 * x;
+        const double norm2 = c0 * c0 + c1 * c1 + c2 * c2;
+        if (!(norm2 > 0.0)) continue;
+        const double w = 1.0 / norm2;
+        s00 += w * c0 * c0;
+        s01 += w * c0 * c1;
+        s02 += w * c0 * c2;
+        s11 += w * c1 * c1;
+        s12 += w * c1 * c2;
+        s22 += w * c2 * c2;
     }
-    return S.determinant();
+    return s00 * (s11 * s22 - s12 * s12) - s01 * (s01 * s22 - s12 * s02) +
+           s02 * (s01 * s12 - s11 * s02);
 }
 
 /** Indices of the `count` candidates of StartRotations with the lowest coplanarity cost on the

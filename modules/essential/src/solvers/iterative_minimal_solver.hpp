@@ -24,7 +24,8 @@ converge(), the optimisation from one start.
 A call starts from R = I (with the least-squares translation for it); if that does not give a
 solution that puts the sample in front of both cameras, it starts again from the `extraStarts`
 rotations of StartRotations that best explain the sample (rankStartRotations), in that order, and
-returns the first such solution. */
+returns the first such solution. A sample whose constraints are linearly dependent gets no start
+(constraintsAreDependent). */
 template <class Settings> class IterativeMinimalSolver : public EssentialSolver
 {
 public:
@@ -36,6 +37,8 @@ public:
     int solve(const Point2d* x1, const Point2d* x2, RNG& /*rng*/, Matx33d* solutions) override
     {
         lastIterations_ = 0;
+        lastStarts_ = 0;
+        if (constraintsAreDependent(x1, x2)) return 0;
         lastStarts_ = 1;
         geometry::EssentialPose pose = bestTranslationStart(x1, x2, 5, Eigen::Matrix3d::Identity());
         if (accept(pose, x1, x2)) return writeSolution(pose, solutions);

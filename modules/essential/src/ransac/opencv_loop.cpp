@@ -183,6 +183,7 @@ SearchResult searchOpenCvLoop(const Problem& problem, EssentialSolver& solver, R
     const int modelPoints = solver.sampleSize();
     if (n < modelPoints || modelPoints <= 0) return result;
 
+    solver.setThreshold(problem.threshold); // once per estimate (EssentialSolver)
     Ptr<SolverCallback> callback(new SolverCallback(problem, solver, rng)); // makePtr: const refs
     const bool lmeds = method == LMEDS;
     // maxIters is passed as given: OpenCV's loop applies its own confidence formula (see above).

@@ -56,6 +56,7 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
     SearchResult result;
     result.threshold = problem.threshold;
     const int n = problem.size();
+    solver.setThreshold(problem.threshold); // once per estimate (EssentialSolver)
     SampleBuffer buffer(solver);
     if (n < buffer.sampleSize) return result;
     const int cap = sampleCap(settings.maxIters, solver.successRate());

@@ -50,6 +50,7 @@ SearchResult searchPreemptive(const Problem& problem, EssentialSolver& solver, R
     SearchResult result;
     result.threshold = problem.threshold;
     const int n = problem.size();
+    solver.setThreshold(problem.threshold); // once per estimate (EssentialSolver)
     SampleBuffer buffer(solver);
     if (n < buffer.sampleSize) return result;
     const int B = std::max(1, settings.preemptiveBlockSize);

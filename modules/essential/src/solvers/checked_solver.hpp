@@ -83,6 +83,11 @@ public:
         return h >= 0.0 && h <= 1.0 ? h : EssentialSolver::hitProbability(inlierRatio);
     }
 
+    void setThreshold(double normalisedThreshold) override
+    {
+        callUserCode(name_, "setThreshold()", [&] { inner_->setThreshold(normalisedThreshold); });
+    }
+
 private:
     Ptr<EssentialSolver> inner_;
     std::string name_;

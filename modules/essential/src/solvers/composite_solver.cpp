@@ -56,6 +56,12 @@ double CompositeSolver::hitProbability(double inlierRatio) const
     return sum / totalWeight_;
 }
 
+void CompositeSolver::setThreshold(double normalisedThreshold)
+{
+    for (const Ptr<EssentialSolver>& part : parts_)
+        part->setThreshold(normalisedThreshold);
+}
+
 void parseCompositeName(const std::string& name, std::vector<std::string>& parts,
                         std::vector<int>& weights)
 {

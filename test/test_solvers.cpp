@@ -56,10 +56,11 @@ Rates measure(cv::essential::EssentialSolver& solver, int trials, double noise, 
 }
 
 // Measured with 2000 problems of the paper's protocol (rotation up to 35 degrees): gn returns a
-// solution for 88.7% and finds the true E on 45.9%, lm 85.0% and 48.7% (noise-free; the other
-// returned solutions are other real roots that pass the cheirality test). The bounds leave about
-// 3 standard errors (sqrt(p(1-p)/2000) ~ 1.1%) of margin, and each solver's successRate() (the
-// lowest rate of any rotation bin, see below) must not promise more than it delivers on average.
+// solution for 79.7% and finds the true E on 42.0% (R = I, then one ranked start), lm 88.8% and
+// 51.2% (three ranked starts); noise-free; the other returned solutions are other real roots that
+// pass the cheirality test. The bounds leave about 3 standard errors (sqrt(p(1-p)/2000) ~ 1.1%)
+// of margin, and each solver's successRate() (the lowest rate of any rotation bin, see below) must
+// not promise more than it delivers on average.
 void expectRates(cv::essential::EssentialSolver& solver, double minConverged, double minCorrect)
 {
     const Rates r = measure(solver, 2000, 0.0, 1e-6);
@@ -73,17 +74,17 @@ void expectRates(cv::essential::EssentialSolver& solver, double minConverged, do
 TEST(Solvers, GaussNewtonConvergesOnNoiseFreeMinimalSets)
 {
     cv::essential::solvers::GaussNewtonSolver gn;
-    expectRates(gn, 0.85, 0.42);
+    expectRates(gn, 0.76, 0.38);
 }
 
 TEST(Solvers, LevenbergMarquardtConvergesOnNoiseFreeMinimalSets)
 {
     cv::essential::solvers::LevenbergMarquardtSolver lm;
-    expectRates(lm, 0.81, 0.45);
+    expectRates(lm, 0.85, 0.47);
 }
 
 // With the protocol's noise (0.001) a minimal set still has exact solutions, now near the true E:
-// measured 31.7% (gn) and 33.4% (lm) within 0.05 of it (1000 problems; standard error 1.5%).
+// measured 29.0% (gn) and 34.6% (lm) within 0.05 of it (1000 problems; standard error 1.5%).
 TEST(Solvers, BothFindNearTrueSolutionsWithNoise)
 {
     cv::essential::solvers::GaussNewtonSolver gn;
@@ -92,7 +93,7 @@ TEST(Solvers, BothFindNearTrueSolutionsWithNoise)
     const double lmRate = measure(lm, 1000, 0.001, 0.05).correct;
     RecordProperty("gn", std::to_string(gnRate));
     RecordProperty("lm", std::to_string(lmRate));
-    EXPECT_GT(gnRate, 0.27);
+    EXPECT_GT(gnRate, 0.24);
     EXPECT_GT(lmRate, 0.29);
 }
 
@@ -121,12 +122,11 @@ essential_test::SyntheticScene binProblem(bool paper, double lo, double hi, uint
     }
 }
 
-// The engine's stopping rule and sample cap take successRate() as the solver's rate on whatever
-// the data are; so it must hold at every rotation, not just on average. Measured with 3000
-// problems per bin (essential_solver_hit_rates, other seeds), the lowest bins are gn 0.342 (paper
-// protocol, 30-35 degrees) and lm 0.283 (converging, 15-30 degrees), against the declared 0.33 and
-// 0.27. With 1500 problems per bin the standard error is at most 0.013; the bound allows 0.03
-// (about 2.5 standard errors) below the declared rate.
+// The engine's stopping rule and sample cap take hitProbabilityAt(1, model) as the solver's rate
+// at the pose of its best model: it must hold in every rotation bin. Measured with 3000 problems
+// per bin (essential_solver_hit_rates, other seeds), the declared rates are the lower of the two
+// scene families, rounded down. With 1500 problems per bin the standard error is at most 0.013;
+// the bound allows 0.03 (about 2.5 standard errors) below the declared rate.
 void expectRateInEveryBin(cv::essential::EssentialSolver& solver)
 {
     struct Bin
@@ -142,16 +142,21 @@ void expectRateInEveryBin(cv::essential::EssentialSolver& solver)
     cv::Matx33d E[1];
     for (const Bin& bin : bins) {
         int correct = 0;
+        double declared = 1.0;
         for (int t = 0; t < trials; ++t) {
             const auto scene = binProblem(bin.paper, bin.lo, bin.hi,
                                           777000 + 1000003ULL * uint64_t(bin.lo) + uint64_t(t));
+            // The rate the solver declares at this pose (the same for the whole bin).
+            declared = std::min(declared, solver.hitProbabilityAt(1.0, scene.E));
             if (solver.solve(scene.x1.data(), scene.x2.data(), rng, E) == 1)
                 correct += essentialDistance(E[0], scene.E) < 1e-6;
         }
         const double rate = correct / double(trials);
+        EXPECT_GE(rate, declared - 0.03) << (bin.paper ? "paper protocol " : "converging ")
+                                         << bin.lo << "-" << bin.hi << " degrees";
+        // successRate() is the rate at any pose: no bin may fall below it either.
         EXPECT_GE(rate, solver.successRate() - 0.03)
-            << (bin.paper ? "paper protocol " : "converging ") << bin.lo << "-" << bin.hi
-            << " degrees";
+            << (bin.paper ? "paper protocol " : "converging ") << bin.lo << "-" << bin.hi;
     }
 }
 
@@ -159,17 +164,49 @@ TEST(Solvers, GaussNewtonRateHoldsAtEveryRotation)
 {
     cv::essential::solvers::GaussNewtonSolver gn;
     expectRateInEveryBin(gn);
+    cv::essential::solvers::GaussNewtonSolver identityOnly;
+    identityOnly.useIdentityStartOnly();
+    expectRateInEveryBin(identityOnly);
 }
 
 TEST(Solvers, LevenbergMarquardtRateHoldsAtEveryRotation)
 {
     cv::essential::solvers::LevenbergMarquardtSolver lm;
     expectRateInEveryBin(lm);
+    cv::essential::solvers::LevenbergMarquardtSolver identityOnly;
+    identityOnly.useIdentityStartOnly();
+    expectRateInEveryBin(identityOnly);
 }
 
-// Without the extra starts (R = I alone, the solvers before the start sequence) the rate falls
-// with the rotation: this is what the start sequence is for, and what the engine's confidence
-// would otherwise silently lose. Measured: gn 0.330 at 0-15 degrees, 0.040 at 75-90 (converging).
+// The rate the solvers declare follows the pose: from R = I alone, high for small rotations and
+// low for wide ones; a mix with nister declares the average of its parts, at least one half.
+TEST(Solvers, DeclaredRateFollowsTheRotation)
+{
+    const cv::Vec3d t(0.6, 0.0, 0.8);
+    const cv::Matx33d small = essential_test::skewMatrix(t) *
+                              essential_test::axisAngle(cv::Vec3d(0, 1, 0), 10 * CV_PI / 180);
+    const cv::Matx33d wide = essential_test::skewMatrix(t) *
+                             essential_test::axisAngle(cv::Vec3d(0, 1, 0), 80 * CV_PI / 180);
+    cv::essential::solvers::GaussNewtonSolver identityOnly;
+    identityOnly.useIdentityStartOnly();
+    EXPECT_NEAR(identityOnly.hitProbabilityAt(1.0, small), 0.33, 1e-12);
+    EXPECT_NEAR(identityOnly.hitProbabilityAt(1.0, wide), 0.040, 1e-12);
+    EXPECT_NEAR(identityOnly.hitProbabilityAt(0.5, wide), 0.040 / 32, 1e-12);
+    const auto mix = cv::essential::createSolver("gn+nister");
+    const double nister = cv::essential::createSolver("nister")->successRate();
+    EXPECT_NEAR(mix->hitProbabilityAt(1.0, small), (0.33 + nister) / 2, 1e-12);
+    EXPECT_NEAR(mix->hitProbabilityAt(1.0, wide), (0.040 + nister) / 2, 1e-12);
+    EXPECT_NEAR(mix->successRate(), (0.040 + nister) / 2, 1e-12);
+    // Alone, gn keeps its extra start and a nearly flat rate.
+    const auto gn = cv::essential::createSolver("gn");
+    EXPECT_GE(gn->hitProbabilityAt(1.0, wide), 0.35);
+    EXPECT_GE(gn->successRate(), 0.25);
+}
+
+// Without the extra starts (R = I alone, gn as it was before the start sequence) the rate falls
+// with the rotation: this is what the start sequence and the rate by rotation are for, and what
+// the engine's confidence silently lost before. Measured: 0.330 at 0-15 degrees, 0.040 at 75-90
+// (converging views).
 TEST(Solvers, IdentityStartAloneFailsAtWideRotations)
 {
     cv::essential::solvers::GaussNewtonSettings settings;

@@ -29,6 +29,8 @@ public:
     /** The parts' rates averaged with their weights. */
     double successRate() const override;
     double hitProbability(double inlierRatio) const override;
+    /** The parts' hitProbabilityAt() averaged with their weights. */
+    double hitProbabilityAt(double inlierRatio, const Matx33d& model) const override;
     /** Passed on to every part. */
     void setThreshold(double normalisedThreshold) override;
 

@@ -89,11 +89,11 @@ inline double coplanarityCost(const Eigen::Matrix3d& R, const Point2d* x1, const
 }
 
 /** Indices of the `count` candidates of StartRotations with the lowest coplanarity cost on the
-sample, best first (count at most 4). */
+sample, best first (count at most 8). */
 inline void rankStartRotations(const Point2d* x1, const Point2d* x2, int n, int count, int* best)
 {
     const StartRotations& rotations = StartRotations::instance();
-    double bestCost[4];
+    double bestCost[8];
     for (int k = 0; k < count; ++k) {
         bestCost[k] = HUGE_VAL;
         best[k] = 0;

@@ -3,8 +3,6 @@
 
 #include "solvers/composite_solver.hpp"
 
-#include "solvers/iterative_minimal_solver.hpp"
-
 #include <algorithm>
 #include <cstdlib>
 
@@ -72,6 +70,13 @@ double CompositeSolver::hitProbabilityAt(double inlierRatio, const Matx33d& mode
     for (size_t i = 0; i < parts_.size(); ++i)
         sum += weights_[i] * parts_[i]->hitProbabilityAt(inlierRatio, model);
     return sum / totalWeight_;
+}
+
+void CompositeSolver::useIdentityStartOnly(bool keepCheirality)
+{
+    for (const Ptr<EssentialSolver>& part : parts_)
+        if (auto* iterative = dynamic_cast<IdentityStartOnly*>(part.get()))
+            iterative->useIdentityStartOnly(keepCheirality);
 }
 
 void CompositeSolver::setThreshold(double normalisedThreshold)

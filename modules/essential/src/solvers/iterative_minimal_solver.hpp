@@ -30,15 +30,18 @@ solution that puts the sample in front of both cameras, it starts again from the
 rotations of StartRotations that best explain the sample (rankStartRotations), in that order, and
 returns the first such solution. A sample whose constraints are linearly dependent gets no start
 (constraintsAreDependent). */
-/** What a composite that holds a direct solver asks of its iterative parts (composite_solver.cpp):
-start from R = I only. The extra starts cost every contaminated sample a few more optimisations;
-next to a direct solver, which finds wide rotations at 5 us per sample, they are not worth it, and
-the part's rate by rotation becomes that of R = I alone. */
+/** What an engine or a composite may ask of an iterative solver: start from R = I only. The extra
+starts cost every contaminated sample a few more optimisations; next to a direct solver, which
+finds wide rotations at 5 us per sample (composite_solver.cpp), or when only the number of
+hypotheses per unit time counts (the preemptive engine), they are not worth it, and the rate by
+rotation becomes that of R = I alone. `keepCheirality` false also returns the roots that cannot put
+the sample in front of the cameras, as the solvers did before the filter: the preemptive engine
+counts hypotheses, and its budgets were chosen for those. */
 class IdentityStartOnly
 {
 public:
     virtual ~IdentityStartOnly() {}
-    virtual void useIdentityStartOnly() = 0;
+    virtual void useIdentityStartOnly(bool keepCheirality = true) = 0;
 };
 
 template <class Settings>
@@ -63,9 +66,10 @@ public:
         return rateAt(model) * std::pow(w, 5);
     }
 
-    void useIdentityStartOnly() override
+    void useIdentityStartOnly(bool keepCheirality = true) override
     {
         settings_.extraStarts = 0;
+        settings_.requireCheirality = settings_.requireCheirality && keepCheirality;
         settings_.rateByRotation = settings_.identityRateByRotation;
         settings_.successRate = *std::min_element(settings_.identityRateByRotation.begin(),
                                                   settings_.identityRateByRotation.end());

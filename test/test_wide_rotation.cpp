@@ -19,11 +19,13 @@
 namespace {
 
 /** Problems per inlier ratio: at 100, "within one point of nister" allows one failure more than
-nister. Measured on these problems: gn, gn+nister and nister find all 100 at 30% inliers, lm 99
-(one near model, 4.7 degrees off, at the sample cap); on 200 other problems
-(essential_wide_rotation_reliability) gn 1.000 / 1.000, lm 1.000 / 0.995, gn+nister 1.000 / 1.000
-and nister 1.000 / 1.000 at 50% / 30% inliers. About 1 s (50%) to 6 s (lm, 30%) per case in
-Release; scripts/test.sh leaves them out of the sanitizer run. */
+nister. Measured on these problems: at 50% inliers every solver finds all 100; at 30% nister and
+gn+nister find all 100, gn and lm 99 (each one problem where the sample cap ran out): no margin left
+for them, which is what the declared rates give (the cap makes the confidence at the cap equal to
+a direct solver's at maxIters; nister's several roots per sample help its local optimisation
+beyond that). On 200 other problems (essential_wide_rotation_reliability) gn 1.000 / 0.990, lm
+1.000 / 0.995, gn+nister and nister 1.000 / 1.000 at 50% / 30% inliers. 0.6 s (gn+nister, 50%) to
+4.8 s (lm, 30%) per case in Release; scripts/test.sh leaves them out of the sanitizer run. */
 constexpr int kProblems = 100;
 
 /** Rotation below 2 degrees and translation direction below 5 degrees from the truth. */

@@ -22,7 +22,7 @@ namespace solvers {
 /** Candidate start rotations: the 12 icosahedral directions as rotation axes, each at 25, 50 and
 75 degrees (36 rotations; R = I, the first start, is not among them). Shells at 30 / 60 / 90 and
 40 / 80 degrees, and random sets of 30 rotations up to 60, 90 or 180 degrees, gave lower rates
-beyond 45 degrees (docs/SOLVERS.md, "Starting point"). */
+beyond 45 degrees in exploratory runs (docs/SOLVERS.md, "Success rate by rotation"). */
 class StartRotations
 {
 public:

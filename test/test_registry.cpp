@@ -35,6 +35,11 @@ public:
     int sampleSize() const override { return inner_->sampleSize(); }
     int maxSolutions() const override { return inner_->maxSolutions(); }
     double successRate() const override { return inner_->successRate(); }
+    double hitProbabilityAt(double w, const cv::Matx33d& model) const override
+    {
+        return inner_->hitProbabilityAt(w, model);
+    }
+    void setThreshold(double t) override { inner_->setThreshold(t); }
 
     int solve(const cv::Point2d* x1, const cv::Point2d* x2, cv::RNG& rng,
               cv::Matx33d* solutions) override

@@ -59,8 +59,9 @@ struct SearchResult
 };
 
 /** Adaptive MSAC: stops when the samples drawn reach requiredIterations() for the best inlier ratio
-so far (with the solver's success rate), or sampleCap(maxIters, success rate). A result needs at
-least sampleSize inliers. Options (SearchSettings): local optimisation of each new best model by
+so far (with the solver's hit probability at the best model's pose, hitProbabilityAt()), or
+sampleCap(maxIters, the solver's rate there; successRate() before there is a model). A result needs
+at least sampleSize inliers. Options (SearchSettings): local optimisation of each new best model by
 IRLS on its inliers, kept when it lowers the MSAC cost; PROSAC sampling with PROSAC's stopping rule
 (ransac/prosac_sampler.hpp); SPRT verification (ransac/sprt.hpp), with the sample probability in
 the stopping rule lowered by the test's bound on false rejections. */

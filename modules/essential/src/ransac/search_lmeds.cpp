@@ -36,6 +36,7 @@ SearchResult searchLmeds(const Problem& problem, EssentialSolver& solver, RNG& r
 {
     SearchResult result;
     const int n = problem.size();
+    solver.setThreshold(problem.threshold); // once per estimate (EssentialSolver)
     SampleBuffer buffer(solver);
     if (n < buffer.sampleSize) return result;
 

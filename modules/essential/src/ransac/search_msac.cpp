@@ -56,9 +56,12 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
     SearchResult result;
     result.threshold = problem.threshold;
     const int n = problem.size();
+    solver.setThreshold(problem.threshold); // once per estimate (EssentialSolver)
     SampleBuffer buffer(solver);
     if (n < buffer.sampleSize) return result;
-    const int cap = sampleCap(settings.maxIters, solver.successRate());
+    // The sample cap: from the solver's rate at any pose until there is a model, then from its
+    // rate at the model's pose (EssentialSolver::hitProbabilityAt).
+    int cap = sampleCap(settings.maxIters, solver.successRate());
 
     // PROSAC: the samples follow the growth schedule with T_N = the sample cap, so that the pool
     // covers every point by the time the cap is reached.
@@ -103,7 +106,10 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
             if (mask[i]) chosen.push_back(i);
         const int pool = static_cast<int>(chosen.size());
         if (pool < 2 * inner.sampleSize) return;
-        for (int k = 0; k < kInnerSamples; ++k) {
+        // kInnerSamples calls of a direct solver; an iterative one that solves a fraction s of
+        // clean samples (at the best model's pose) gets kInnerSamples / s, as many expected hits.
+        const int innerSamples = sampleCap(kInnerSamples, solver.hitProbabilityAt(1.0, result.E));
+        for (int k = 0; k < innerSamples; ++k) {
             drawUniformSample(innerRng, pool, inner.sampleSize, inner.indices.data());
             for (int i = 0; i < inner.sampleSize; ++i) {
                 inner.x1[i] = problem.p1[chosen[inner.indices[i]]];
@@ -174,11 +180,12 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
     // non-randomness test (every sample so far was drawn from the best n points, and the pool is
     // then held at the chosen length so that all further ones are too).
     auto stopRule = [&](double inlierRatio) {
-        const double p = solver.hitProbability(inlierRatio);
+        const double p = solver.hitProbabilityAt(inlierRatio, result.E);
         return settings.sprt ? sprt.samplesNeeded(p, settings.confidence, cap)
                              : requiredIterations(settings.confidence, p, cap);
     };
     auto samplesNeeded = [&]() {
+        cap = sampleCap(settings.maxIters, solver.hitProbabilityAt(1.0, result.E));
         int need = stopRule(double(best.inliers) / n);
         if (!prosac || prosac->isUniform()) return need;
         inlierMask(result.E, problem, problem.threshold, mask.data());

@@ -83,6 +83,18 @@ public:
         return h >= 0.0 && h <= 1.0 ? h : EssentialSolver::hitProbability(inlierRatio);
     }
 
+    double hitProbabilityAt(double inlierRatio, const Matx33d& model) const override
+    {
+        const double h = callUserCode(name_, "hitProbabilityAt()",
+                                      [&] { return inner_->hitProbabilityAt(inlierRatio, model); });
+        return h >= 0.0 && h <= 1.0 ? h : hitProbability(inlierRatio);
+    }
+
+    void setThreshold(double normalisedThreshold) override
+    {
+        callUserCode(name_, "setThreshold()", [&] { inner_->setThreshold(normalisedThreshold); });
+    }
+
 private:
     Ptr<EssentialSolver> inner_;
     std::string name_;

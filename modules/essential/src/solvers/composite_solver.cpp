@@ -19,6 +19,14 @@ CompositeSolver::CompositeSolver(std::vector<Ptr<EssentialSolver>> parts, std::v
         maxSolutions_ = std::max(maxSolutions_, parts_[i]->maxSolutions());
         totalWeight_ += weights_[i];
     }
+    // Next to a direct solver, iterative parts start from R = I only (IdentityStartOnly).
+    bool hasDirectPart = false;
+    for (const Ptr<EssentialSolver>& part : parts_)
+        hasDirectPart |= part->successRate() >= 0.99;
+    if (hasDirectPart)
+        for (const Ptr<EssentialSolver>& part : parts_)
+            if (auto* iterative = dynamic_cast<IdentityStartOnly*>(part.get()))
+                iterative->useIdentityStartOnly();
     // Interleave: at each step pick the part furthest behind its share (smooth weighted
     // round-robin), so "gn:3+nister:1" runs gn, gn, nister, gn rather than three gn in a row.
     std::vector<int> credit(parts_.size(), 0);
@@ -54,6 +62,27 @@ double CompositeSolver::hitProbability(double inlierRatio) const
     for (size_t i = 0; i < parts_.size(); ++i)
         sum += weights_[i] * parts_[i]->hitProbability(inlierRatio);
     return sum / totalWeight_;
+}
+
+double CompositeSolver::hitProbabilityAt(double inlierRatio, const Matx33d& model) const
+{
+    double sum = 0.0;
+    for (size_t i = 0; i < parts_.size(); ++i)
+        sum += weights_[i] * parts_[i]->hitProbabilityAt(inlierRatio, model);
+    return sum / totalWeight_;
+}
+
+void CompositeSolver::useIdentityStartOnly(bool keepCheirality)
+{
+    for (const Ptr<EssentialSolver>& part : parts_)
+        if (auto* iterative = dynamic_cast<IdentityStartOnly*>(part.get()))
+            iterative->useIdentityStartOnly(keepCheirality);
+}
+
+void CompositeSolver::setThreshold(double normalisedThreshold)
+{
+    for (const Ptr<EssentialSolver>& part : parts_)
+        part->setThreshold(normalisedThreshold);
 }
 
 void parseCompositeName(const std::string& name, std::vector<std::string>& parts,

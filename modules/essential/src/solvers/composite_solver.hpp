@@ -8,6 +8,7 @@
 #define OPENCV_ESSENTIAL_SOLVERS_COMPOSITE_SOLVER_HPP
 
 #include "opencv2/essential/solver.hpp"
+#include "solvers/iterative_minimal_solver.hpp"
 
 #include <string>
 #include <vector>
@@ -19,7 +20,7 @@ namespace solvers {
 /** Calls its parts in turn, part i on `weights[i]` of every sum(weights) samples, in a fixed
 interleaved order. The sample is the largest any part needs; a part that needs fewer points uses
 the first ones (a random subset of a random sample is a random sample). */
-class CompositeSolver : public EssentialSolver
+class CompositeSolver : public EssentialSolver, public IdentityStartOnly
 {
 public:
     CompositeSolver(std::vector<Ptr<EssentialSolver>> parts, std::vector<int> weights);
@@ -29,6 +30,12 @@ public:
     /** The parts' rates averaged with their weights. */
     double successRate() const override;
     double hitProbability(double inlierRatio) const override;
+    /** The parts' hitProbabilityAt() averaged with their weights. */
+    double hitProbabilityAt(double inlierRatio, const Matx33d& model) const override;
+    /** Passed on to every part. */
+    void setThreshold(double normalisedThreshold) override;
+    /** Passed on to every iterative part. */
+    void useIdentityStartOnly(bool keepCheirality = true) override;
 
 private:
     std::vector<Ptr<EssentialSolver>> parts_;

@@ -4,29 +4,150 @@
 #ifndef OPENCV_ESSENTIAL_SOLVERS_ITERATIVE_MINIMAL_SOLVER_HPP
 #define OPENCV_ESSENTIAL_SOLVERS_ITERATIVE_MINIMAL_SOLVER_HPP
 
+#include "geometry/essential_decomposition.hpp"
 #include "opencv2/essential/solver.hpp"
+#include "solvers/minimal_set_problem.hpp"
+#include "solvers/sample_cheirality.hpp"
+#include "solvers/solution_output.hpp"
+#include "solvers/start_rotations.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
 
 namespace cv {
 namespace essential {
 namespace solvers {
 
 /** What the optimisation-based minimal solvers (gn, lm) have in common: a five-point sample, at
-most one solution per call, a measured success rate, and settings of type `Settings` (which must
-have a `successRate` member). Each derived class only implements solve(). */
-template <class Settings> class IterativeMinimalSolver : public EssentialSolver
+most one solution per call, a measured success rate, and the sequence of starts. Settings must have
+the members `successRate`, `rateByRotation`, `identityRateByRotation`, `extraStarts` and
+`requireCheirality`. A derived class implements
+converge(), the optimisation from one start.
+
+A call starts from R = I (with the least-squares translation for it); if that does not give a
+solution that puts the sample in front of both cameras, it starts again from the `extraStarts`
+rotations of StartRotations that best explain the sample (rankStartRotations), in that order, and
+returns the first such solution. A sample whose constraints are linearly dependent gets no start
+(constraintsAreDependent). */
+/** What an engine or a composite may ask of an iterative solver: start from R = I only. The extra
+starts cost every contaminated sample a few more optimisations; next to a direct solver, which
+finds wide rotations at 5 us per sample (composite_solver.cpp), or when only the number of
+hypotheses per unit time counts (the preemptive engine), they are not worth it, and the rate by
+rotation becomes that of R = I alone. `keepCheirality` false also returns the roots that cannot put
+the sample in front of the cameras, as the solvers did before the filter: the preemptive engine
+counts hypotheses, and its budgets were chosen for those. */
+class IdentityStartOnly
 {
 public:
+    virtual ~IdentityStartOnly() {}
+    virtual void useIdentityStartOnly(bool keepCheirality = true) = 0;
+};
+
+template <class Settings>
+class IterativeMinimalSolver : public EssentialSolver, public IdentityStartOnly
+{
+public:
+    /** Ranked start rotations examined for the extra starts: the first extraStarts of them that
+    put the sample in front of the cameras at their start are optimised. */
+    static constexpr int kRanked = 8;
+
     explicit IterativeMinimalSolver(const Settings& settings) : settings_(settings) {}
     int sampleSize() const override { return 5; }
     int maxSolutions() const override { return 1; }
     double successRate() const override { return settings_.successRate; }
 
-    /** Iterations used by the last call of solve() (for measurements). */
+    /** With Settings::rateByRotation: the rate of the bin of the model's rotation angle (bins of
+    15 degrees from 0, the last bin for anything beyond) times w^5; otherwise the default. */
+    double hitProbabilityAt(double inlierRatio, const Matx33d& model) const override
+    {
+        if (settings_.rateByRotation.empty()) return hitProbability(inlierRatio);
+        const double w = std::min(1.0, std::max(0.0, inlierRatio));
+        return rateAt(model) * std::pow(w, 5);
+    }
+
+    void useIdentityStartOnly(bool keepCheirality = true) override
+    {
+        settings_.extraStarts = 0;
+        settings_.requireCheirality = settings_.requireCheirality && keepCheirality;
+        settings_.rateByRotation = settings_.identityRateByRotation;
+        settings_.successRate = *std::min_element(settings_.identityRateByRotation.begin(),
+                                                  settings_.identityRateByRotation.end());
+        cachedModel_ = Matx33d::zeros();
+    }
+
+    int solve(const Point2d* x1, const Point2d* x2, RNG& /*rng*/, Matx33d* solutions) override
+    {
+        lastIterations_ = 0;
+        lastStarts_ = 0;
+        if (constraintsAreDependent(x1, x2)) return 0;
+        lastStarts_ = 1;
+        geometry::EssentialPose pose = bestTranslationStart(x1, x2, 5, Eigen::Matrix3d::Identity());
+        if (accept(pose, x1, x2)) return writeSolution(pose, solutions);
+        const int extra = std::min(std::max(settings_.extraStarts, 0), kRanked);
+        if (extra == 0) return 0;
+        int order[kRanked];
+        rankStartRotations(x1, x2, 5, kRanked, order);
+        for (int k = 0, tried = 0; k < kRanked && tried < extra; ++k) {
+            pose = bestTranslationStart(x1, x2, 5, StartRotations::instance()[order[k]]);
+            // A start that cannot put the sample in front of the cameras rarely leads to a root
+            // that can: skipping it costs 0.1 us instead of an optimisation.
+            if (settings_.requireCheirality && !sampleIsInFront(pose, x1, x2, 5)) continue;
+            ++tried;
+            ++lastStarts_;
+            if (accept(pose, x1, x2)) return writeSolution(pose, solutions);
+        }
+        return 0;
+    }
+
+    /** Iterations used by the last call of solve(), over all its starts (for measurements). */
     int lastIterations() const { return lastIterations_; }
+    /** Starts tried by the last call of solve(). */
+    int lastStarts() const { return lastStarts_; }
 
 protected:
+    /** Optimises `pose` on the sample; true when it converged to an exact solution. Adds the
+    iterations it used to lastIterations_. */
+    virtual bool converge(geometry::EssentialPose& pose, const Point2d* x1, const Point2d* x2) = 0;
+
     Settings settings_;
     int lastIterations_ = 0;
+    int lastStarts_ = 0;
+
+private:
+    bool accept(geometry::EssentialPose& pose, const Point2d* x1, const Point2d* x2)
+    {
+        return converge(pose, x1, x2) &&
+               (!settings_.requireCheirality || sampleIsInFront(pose, x1, x2, 5));
+    }
+
+    /** The rate of the bin of the model's rotation; the model's angle is the smaller of its two
+    rotations' (the twisted pair, 180 degrees apart: for a rotation of up to 90 degrees that is
+    the true one). Cached: the engine asks several times per model. */
+    double rateAt(const Matx33d& model) const
+    {
+        if (model == cachedModel_) return cachedRate_;
+        Eigen::Matrix3d E, R1, R2;
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j)
+                E(i, j) = model(i, j);
+        Eigen::Vector3d t;
+        double rate = settings_.successRate;
+        if (geometry::decomposeEssential(E, R1, R2, t)) {
+            const double cosine =
+                std::min(1.0, std::max(-1.0, (std::max(R1.trace(), R2.trace()) - 1.0) / 2.0));
+            const double degrees = std::acos(cosine) * 180.0 / CV_PI;
+            const size_t bin =
+                std::min(static_cast<size_t>(degrees / 15.0), settings_.rateByRotation.size() - 1);
+            rate = settings_.rateByRotation[bin];
+        }
+        cachedModel_ = model;
+        cachedRate_ = rate;
+        return rate;
+    }
+
+    mutable Matx33d cachedModel_ = Matx33d::zeros();
+    mutable double cachedRate_ = 0.0;
 };
 
 } // namespace solvers

@@ -3,29 +3,25 @@
 
 #include "solvers/levenberg_marquardt.hpp"
 
-#include "solvers/minimal_set_problem.hpp"
-#include "solvers/solution_output.hpp"
-
 #include <Eigen/Cholesky>
 
 namespace cv {
 namespace essential {
 namespace solvers {
 
-int LevenbergMarquardtSolver::solve(const Point2d* x1, const Point2d* x2, RNG& /*rng*/,
-                                    Matx33d* solutions)
+bool LevenbergMarquardtSolver::converge(geometry::EssentialPose& pose, const Point2d* x1,
+                                        const Point2d* x2)
 {
-    geometry::EssentialPose pose = bestTranslationStart(x1, x2, 5, Eigen::Matrix3d::Identity());
     geometry::Vector5d r;
     geometry::Matrix5d J;
     double cost = evaluateMinimalSet(pose, x1, x2, r, J);
-    if (!(cost < HUGE_VAL)) return 0;
+    if (!(cost < HUGE_VAL)) return false;
     geometry::Matrix5d A = J.transpose() * J;
     geometry::Vector5d g = J.transpose() * r;
     double lambda = settings_.initialLambda;
     for (int it = 0; it < settings_.maxIterations; ++it) {
-        lastIterations_ = it;
-        if (cost < settings_.convergedCost) return writeSolution(pose, solutions);
+        if (cost < settings_.convergedCost) return true;
+        ++lastIterations_;
         geometry::Matrix5d damped = A;
         damped.diagonal() *= 1.0 + lambda;
         const geometry::Vector5d step = damped.ldlt().solve(-g);
@@ -40,11 +36,10 @@ int LevenbergMarquardtSolver::solve(const Point2d* x1, const Point2d* x2, RNG& /
             lambda *= 0.1;
         } else {
             lambda *= 10.0;
-            if (lambda > settings_.maxLambda) return 0;
+            if (lambda > settings_.maxLambda) return false;
         }
     }
-    lastIterations_ = settings_.maxIterations;
-    return cost < settings_.convergedCost ? writeSolution(pose, solutions) : 0;
+    return cost < settings_.convergedCost;
 }
 
 } // namespace solvers

@@ -30,6 +30,11 @@ double EssentialSolver::hitProbability(double inlierRatio) const
     return successRate() * std::pow(w, sampleSize());
 }
 
+double EssentialSolver::hitProbabilityAt(double inlierRatio, const Matx33d& /*model*/) const
+{
+    return hitProbability(inlierRatio);
+}
+
 namespace {
 
 /** Largest sampleSize() and maxSolutions() a solver may declare: the engines allocate that much

@@ -98,8 +98,9 @@ struct CV_EXPORTS EssentialParams
 
     /** Iteration cap in OpenCV's units. Must be > 0. OpenCV's cap counts samples of a direct
     5-point solver, each of which solves an outlier-free sample; an iterative solver that reaches
-    the true model on a fraction s of outlier-free samples (EssentialSolver::successRate(), 0.35 for
-    gn) may draw up to maxIters / s samples, so that the confidence reached at the cap is the same.
+    the true model on a fraction s of outlier-free samples (EssentialSolver::hitProbabilityAt() at
+    the pose of the best model so far, 0.28 to 0.41 for gn) may draw up to maxIters / s samples, so
+    that the confidence reached at the cap is the same.
     Those samples are still several times cheaper than OpenCV's (see docs/SOLVERS.md). */
     int maxIters = 1000;
 

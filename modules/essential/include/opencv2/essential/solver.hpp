@@ -65,6 +65,28 @@ public:
     sample. A robust solver that tolerates outliers in its sample overrides it.
     */
     virtual double hitProbability(double inlierRatio) const;
+
+    /** @brief hitProbability() for a search whose best model so far is `model` (an essential
+    matrix in normalised coordinates).
+
+    An iterative solver's success depends on the pose it has to find: started at R = I, it reaches
+    small rotations far more often than large ones. Once the engine has a model it takes it as its
+    estimate of the true pose, as it takes the model's support as its estimate of the inlier ratio,
+    and uses this probability in its stopping rule and its sample cap. The default ignores the
+    model and returns hitProbability(inlierRatio).
+    */
+    virtual double hitProbabilityAt(double inlierRatio, const Matx33d& model) const;
+
+    /** @brief The caller's inlier threshold, for solvers whose own tolerances should scale with it.
+
+    The engine calls this once per estimate, before the first solve(), with the threshold of the
+    estimate in normalised image units (the pixel threshold divided by the focal length): the
+    Sampson distance below which a correspondence counts as an inlier. A solver that fits a robust
+    loss to a non-minimal sample (the built-in "robust") sets its loss scale and its inlier test
+    from it, so that they mean the same number of pixels at any focal length. The default does
+    nothing; minimal solvers need no threshold.
+    */
+    virtual void setThreshold(double normalisedThreshold) { (void)normalisedThreshold; }
 };
 
 /** A function that makes a new, independent solver instance. */

@@ -1,0 +1,117 @@
+// This file is part of opencv_essential, licensed under the Apache License, Version 2.0.
+// See the LICENSE file at the top of the source tree.
+
+// Where the iterative minimal solvers (gn, lm) start when R = I did not work: a fixed set of
+// rotations up to 75 degrees, ranked per sample by how nearly they make the sample's epipolar
+// planes share one translation.
+
+#ifndef OPENCV_ESSENTIAL_SOLVERS_START_ROTATIONS_HPP
+#define OPENCV_ESSENTIAL_SOLVERS_START_ROTATIONS_HPP
+
+#include "geometry/so3.hpp"
+
+#include <opencv2/core.hpp>
+
+#include <array>
+#include <cmath>
+
+namespace cv {
+namespace essential {
+namespace solvers {
+
+/** Candidate start rotations: the 12 icosahedral directions as rotation axes, each at 25, 50 and
+75 degrees (36 rotations; R = I, the first start, is not among them). Shells at 30 / 60 / 90 and
+40 / 80 degrees, and random sets of 30 rotations up to 60, 90 or 180 degrees, gave lower rates
+beyond 45 degrees in exploratory runs (docs/SOLVERS.md, "Success rate by rotation"). */
+class StartRotations
+{
+public:
+    static constexpr int kCount = 36;
+
+    static const StartRotations& instance()
+    {
+        static const StartRotations rotations; // thread-safe initialisation (C++11)
+        return rotations;
+    }
+
+    const Eigen::Matrix3d& operator[](int i) const { return rotations_[static_cast<size_t>(i)]; }
+
+private:
+    StartRotations()
+    {
+        const double phi = (1.0 + std::sqrt(5.0)) / 2.0;
+        std::array<Eigen::Vector3d, 12> axes;
+        int k = 0;
+        for (double s1 : {-1.0, 1.0})
+            for (double s2 : {-1.0, 1.0}) {
+                axes[static_cast<size_t>(k++)] = Eigen::Vector3d(0.0, s1, s2 * phi).normalized();
+                axes[static_cast<size_t>(k++)] = Eigen::Vector3d(s1, s2 * phi, 0.0).normalized();
+                axes[static_cast<size_t>(k++)] = Eigen::Vector3d(s2 * phi, 0.0, s1).normalized();
+            }
+        k = 0;
+        for (double degrees : {25.0, 50.0, 75.0})
+            for (const Eigen::Vector3d& axis : axes)
+                rotations_[static_cast<size_t>(k++)] =
+                    geometry::expSO3(axis * degrees * CV_PI / 180.0);
+    }
+
+    std::array<Eigen::Matrix3d, kCount> rotations_;
+};
+
+/** How far the rotation R is from explaining the sample with some translation: with c_i the unit
+normal of the plane through t that (R q1_i, q2_i) must span, c_i = (R q1_i x q2_i) / |...|, the
+true R makes the c_i coplanar (all orthogonal to t), so det(sum c_i c_i^T) is zero there. Unit
+normals weigh every point alike. Ranking by the smallest eigenvalue instead, or by its ratio to
+the middle one, chose worse starts (docs/SOLVERS.md). Scalar code on the six distinct entries of
+the sum: it runs 36 times per call that needs extra starts. */
+inline double coplanarityCost(const Eigen::Matrix3d& R, const Point2d* x1, const Point2d* x2, int n)
+{
+    double s00 = 0, s01 = 0, s02 = 0, s11 = 0, s12 = 0, s22 = 0;
+    for (int i = 0; i < n; ++i) {
+        const double u = x1[i].x, v = x1[i].y, x = x2[i].x, y = x2[i].y;
+        const double a0 = R(0, 0) * u + R(0, 1) * v + R(0, 2);
+        const double a1 = R(1, 0) * u + R(1, 1) * v + R(1, 2);
+        const double a2 = R(2, 0) * u + R(2, 1) * v + R(2, 2);
+        // c = a x (x, y, 1)
+        const double c0 = a1 - a2 * y, c1 = a2 * x - a0, c2 = a0 * y - a1 * x;
+        const double norm2 = c0 * c0 + c1 * c1 + c2 * c2;
+        if (!(norm2 > 0.0)) continue;
+        const double w = 1.0 / norm2;
+        s00 += w * c0 * c0;
+        s01 += w * c0 * c1;
+        s02 += w * c0 * c2;
+        s11 += w * c1 * c1;
+        s12 += w * c1 * c2;
+        s22 += w * c2 * c2;
+    }
+    return s00 * (s11 * s22 - s12 * s12) - s01 * (s01 * s22 - s12 * s02) +
+           s02 * (s01 * s12 - s11 * s02);
+}
+
+/** Indices of the `count` candidates of StartRotations with the lowest coplanarity cost on the
+sample, best first (count at most 8). */
+inline void rankStartRotations(const Point2d* x1, const Point2d* x2, int n, int count, int* best)
+{
+    const StartRotations& rotations = StartRotations::instance();
+    double bestCost[8];
+    for (int k = 0; k < count; ++k) {
+        bestCost[k] = HUGE_VAL;
+        best[k] = 0;
+    }
+    for (int i = 0; i < StartRotations::kCount; ++i) {
+        double cost = coplanarityCost(rotations[i], x1, x2, n);
+        int slot = i;
+        // insertion into the short sorted list
+        for (int k = 0; k < count; ++k)
+            if (cost < bestCost[k]) {
+                std::swap(cost, bestCost[k]);
+                std::swap(slot, best[k]);
+            }
+    }
+}
+
+} // namespace solvers
+} // namespace essential
+} // namespace cv
+
+#endif

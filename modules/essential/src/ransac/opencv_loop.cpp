@@ -184,7 +184,8 @@ SearchResult searchOpenCvLoop(const Problem& problem, EssentialSolver& solver, R
     const int modelPoints = solver.sampleSize();
     if (n < modelPoints || modelPoints <= 0) return result;
 
-    solver.setThreshold(problem.threshold); // once per estimate (EssentialSolver)
+    // Once per estimate (EssentialSolver); LMedS has no inlier threshold of its own.
+    if (method != LMEDS) solver.setThreshold(problem.threshold);
     Ptr<SolverCallback> callback(new SolverCallback(problem, solver, rng)); // makePtr: const refs
     const bool lmeds = method == LMEDS;
     // maxIters is passed as given: OpenCV's loop applies its own confidence formula (see above).

@@ -36,7 +36,7 @@ SearchResult searchLmeds(const Problem& problem, EssentialSolver& solver, RNG& r
 {
     SearchResult result;
     const int n = problem.size();
-    solver.setThreshold(problem.threshold); // once per estimate (EssentialSolver)
+    // No setThreshold(): LMedS has no inlier threshold of its own (it derives one from the data).
     SampleBuffer buffer(solver);
     if (n < buffer.sampleSize) return result;
 

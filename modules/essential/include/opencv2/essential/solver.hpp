@@ -81,7 +81,8 @@ public:
 
     The engine calls this once per estimate, before the first solve(), with the threshold of the
     estimate in normalised image units (the pixel threshold divided by the focal length): the
-    Sampson distance below which a correspondence counts as an inlier. A solver that fits a robust
+    Sampson distance below which a correspondence counts as an inlier. LMedS, which derives its
+    threshold from the data, does not call it. A solver that fits a robust
     loss to a non-minimal sample (the built-in "robust") sets its loss scale and its inlier test
     from it, so that they mean the same number of pixels at any focal length. The default does
     nothing; minimal solvers need no threshold.

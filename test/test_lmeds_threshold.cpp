@@ -131,9 +131,7 @@ TEST(LmedsThreshold, FormulaAtEveryNumberOfPoints)
         SCOPED_TRACE(n);
         cfg.numPoints = n;
         const SyntheticScene s = makeScene(cfg, 33);
-        // LMedS does not use the problem's threshold, but the robust solver scales its inlier
-        // distances by it (EssentialSolver::setThreshold): 3 sigma, as a caller would choose.
-        const cv::essential::Problem problem = cv::essential::makeProblem(s.x1, s.x2, 6e-3);
+        const cv::essential::Problem problem = cv::essential::makeProblem(s.x1, s.x2, 1e-3);
         const cv::Ptr<cv::essential::EssentialSolver> solver =
             cv::essential::createSolver("robust");
         cv::RNG rng(1);

@@ -9,7 +9,7 @@
 //
 //   essential_accuracy_candidates [--n 500] [--ratios 0.9,0.7,0.5,0.25] [--problems 100]
 //                                 [--max-iters 1000] [--camera paper|wide] [--threshold 1]
-//                                 [--lo 5] [--seed 1]
+//                                 [--lo 5] [--seed 1] [--only NAME_PART,NAME_PART]
 
 #include "synthetic_scene.hpp"
 
@@ -46,6 +46,7 @@ struct Args
     double threshold = 1.0;
     int lo = 5;
     uint64_t seed = 1;
+    std::vector<std::string> only; //!< run only candidates whose name contains one of these
 };
 
 Args parse(int argc, char** argv)
@@ -69,6 +70,8 @@ Args parse(int argc, char** argv)
             a.seed = std::strtoull(v.c_str(), nullptr, 10);
         else if (k == "--ratios")
             a.ratios = numbers(v);
+        else if (k == "--only")
+            a.only = split(v);
         else {
             std::fprintf(stderr, "unknown option %s\n", k.c_str());
             std::exit(2);
@@ -239,16 +242,48 @@ int main(int argc, char** argv)
             return o;
         };
     };
-    for (double band : {2.0, 3.0, 5.0})
-        for (double scale : {0.5, 1.0})
-            for (int rounds : {1, 2, 3}) {
-                char name[160];
-                std::snprintf(name, sizeof name, "within %.0f thr, Cauchy %.1f thr, %d round%s",
-                              band, scale, rounds, rounds > 1 ? "s" : "");
-                candidates.push_back({name, banded(band, scale, rounds, false)});
-            }
+    for (bool inFront : {false, true})
+        for (double band : {2.0, 3.0})
+            for (double scale : {0.5, 0.75, 1.0, 1.5})
+                for (int rounds : {1, 2}) {
+                    char name[160];
+                    std::snprintf(name, sizeof name,
+                                  "within %.0f thr%s, Cauchy %.2f thr, %d round%s", band,
+                                  inFront ? " in front" : "", scale, rounds, rounds > 1 ? "s" : "");
+                    candidates.push_back({name, banded(band, scale, rounds, inFront)});
+                }
+    // Stopping rules on the banded selection (2 thresholds, in front, Cauchy at the threshold).
+    for (int cap : {5, 10, 20, 50, 100})
+        for (double tol : {1e-6, 1e-8, 1e-10}) {
+            char name[160];
+            std::snprintf(name, sizeof name,
+                          "stop: within 2 thr in front, Cauchy 1 thr, cap %d, tol %.0e", cap, tol);
+            candidates.push_back({name, [cap, tol](const Input& in) {
+                                      const double t = in.problem->threshold;
+                                      return onPoints(
+                                          in, inliersInFront(in.searchE, *in.problem, 2 * t), t,
+                                          irls(cap, tol));
+                                  }});
+        }
+    // Oracles of the selection: the true inliers only, from the search winner.
+    for (double scale : {0.5, 1.0, 1e3}) {
+        char name[160];
+        std::snprintf(name, sizeof name, "oracle selection: true inliers, Cauchy %.2g thr", scale);
+        candidates.push_back({name, [scale](const Input& in) {
+                                  std::vector<uchar> truth(in.problem->size());
+                                  for (int i = 0; i < in.problem->size(); ++i)
+                                      truth[i] = in.scene->inlier[i] ? 1 : 0;
+                                  return onPoints(in, truth, scale * in.problem->threshold,
+                                                  irls(100, 1e-12));
+                              }});
+    }
     candidates.push_back(
-        {"within 3 thr in front, Cauchy 0.5 thr, 2 rounds", banded(3, 0.5, 2, true)});
+        {"oracle selection: true inliers within 3 thr, Cauchy 0.5 thr", [](const Input& in) {
+             std::vector<uchar> use = inliersOf(in.searchE, *in.problem, 3 * in.problem->threshold);
+             for (int i = 0; i < in.problem->size(); ++i)
+                 use[i] = use[i] && in.scene->inlier[i];
+             return onPoints(in, use, 0.5 * in.problem->threshold, irls(100, 1e-12));
+         }});
     candidates.push_back(
         {"oracle: true inliers, least squares, from the truth", [](const Input& in) {
              std::vector<uchar> truth(in.problem->size());
@@ -259,6 +294,16 @@ int main(int argc, char** argv)
              return onPoints(fromTruth, truth, 1e3 * in.problem->threshold, irls(100, 1e-12));
          }});
 
+    if (!args.only.empty()) {
+        std::vector<Candidate> kept;
+        for (const Candidate& c : candidates)
+            for (const std::string& part : args.only)
+                if (c.name.find(part) != std::string::npos) {
+                    kept.push_back(c);
+                    break;
+                }
+        candidates = kept;
+    }
     std::printf(
         "camera %s, N = %d, %d problems per ratio, maxIters %d, threshold %.2f px, LO %d\n\n",
         args.camera.c_str(), args.n, args.problems, args.maxIters, args.threshold, args.lo);

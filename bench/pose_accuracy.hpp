@@ -3,13 +3,14 @@
 
 // Pose accuracy figures shared by the comparison programs: the error of an estimate (the larger of
 // the rotation error and the translation direction error, in degrees, as in the pose-estimation
-// benchmarks), the area under its cumulative curve up to a limit (AUC), the reliability counts,
-// and the thread CPU clock the timings use.
+// benchmarks) and its AUC (test/pose_auc.hpp), the reliability counts, and the thread CPU clock
+// the timings use.
 
 #ifndef OPENCV_ESSENTIAL_BENCH_POSE_ACCURACY_HPP
 #define OPENCV_ESSENTIAL_BENCH_POSE_ACCURACY_HPP
 
 #include "bench_common.hpp"
+#include "pose_auc.hpp"
 
 #include <algorithm>
 #include <ctime>
@@ -37,26 +38,7 @@ struct PoseOutcome
     double error() const { return std::max(rotErr, transErr); }
 };
 
-/** The area under the cumulative error curve up to `limitDeg`, divided by `limitDeg` (1 if every
-error is 0, 0 if none is below the limit): the recall at error e, the fraction of estimates with
-error <= e, rises linearly between consecutive sorted errors (the trapezoidal rule of the
-pose-estimation benchmarks, e.g. SuperGlue's `pose_auc`). */
-inline double poseAuc(std::vector<double> errors, double limitDeg)
-{
-    if (errors.empty()) return 0.0;
-    std::sort(errors.begin(), errors.end());
-    const double n = static_cast<double>(errors.size());
-    double area = 0.0, prevErr = 0.0, prevRecall = 0.0;
-    for (size_t i = 0; i < errors.size(); ++i) {
-        const double recall = (i + 1) / n;
-        if (errors[i] >= limitDeg) break;
-        area += 0.5 * (prevRecall + recall) * (errors[i] - prevErr);
-        prevErr = errors[i];
-        prevRecall = recall;
-    }
-    area += prevRecall * (limitDeg - prevErr); // flat from the last error below the limit
-    return area / limitDeg;
-}
+using essential_test::poseAuc;
 
 /** Summary of a method over a set of problems. */
 struct AccuracySummary

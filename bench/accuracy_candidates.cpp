@@ -9,7 +9,8 @@
 //
 //   essential_accuracy_candidates [--n 500] [--ratios 0.9,0.7,0.5,0.25] [--problems 100]
 //                                 [--max-iters 1000] [--camera paper|wide] [--threshold 1]
-//                                 [--lo 5] [--seed 1] [--only NAME_PART,NAME_PART]
+//                                 [--lo 5] [--lo-band 2] [--lo-scale 1] [--seed 1] [--only
+//                                 NAME_PART,NAME_PART]
 
 #include "synthetic_scene.hpp"
 
@@ -21,6 +22,7 @@
 #include "problem.hpp"
 #include "ransac/msac_score.hpp"
 #include "ransac/search.hpp"
+#include "refine/final_refinement.hpp"
 #include "refine/irls_refinement.hpp"
 
 #include <opencv2/essential.hpp>
@@ -45,6 +47,7 @@ struct Args
     std::string camera = "paper";
     double threshold = 1.0;
     int lo = 5;
+    double loBand = 2.0, loScale = 1.0; // the library's (find_essential.cpp)
     uint64_t seed = 1;
     std::vector<std::string> only; //!< run only candidates whose name contains one of these
 };
@@ -66,6 +69,10 @@ Args parse(int argc, char** argv)
             a.threshold = std::atof(v.c_str());
         else if (k == "--lo")
             a.lo = std::atoi(v.c_str());
+        else if (k == "--lo-band")
+            a.loBand = std::atof(v.c_str());
+        else if (k == "--lo-scale")
+            a.loScale = std::atof(v.c_str());
         else if (k == "--seed")
             a.seed = std::strtoull(v.c_str(), nullptr, 10);
         else if (k == "--ratios")
@@ -182,6 +189,52 @@ int main(int argc, char** argv)
                               return o;
                           }});
     candidates.push_back({"before: all points, Cauchy 0.5 thr, 20 it, tol 1e-6", current});
+    candidates.push_back(
+        {"after: refineFinal (library)", [](const Input& in) {
+             Output o;
+             o.E = ce::refine::refineFinal(*in.problem, in.searchE, in.problem->threshold).E;
+             o.mask = inliersOf(o.E, *in.problem, in.problem->threshold);
+             return o;
+         }});
+    // The library's final stage with other settings.
+    struct FinalVariant
+    {
+        const char* name;
+        double window, minBand, bandSigmas, minScale, scaleSigmas;
+        int rounds;
+    };
+    const FinalVariant finals[] = {
+        {"final: sigma = thr/2, band 2 thr, scale thr", 0, 2, 4, 1, 2, 1},
+        {"final: sigma = thr/2, band 2 thr, scale thr, 2 rounds", 0, 2, 4, 1, 2, 2},
+        {"final: est. sigma, band max(2 thr, 4 s), scale max(thr, 2 s)", 4, 2, 4, 1, 2, 1},
+        {"final: est. sigma, band max(2 thr, 4 s), scale max(thr, 2 s), 2 rounds", 4, 2, 4, 1, 2,
+         2},
+        {"final: est. sigma, band 4 s, scale 2 s", 4, 0, 4, 0, 2, 1},
+        {"final: est. sigma, band 4 s, scale 2 s, 2 rounds", 4, 0, 4, 0, 2, 2},
+        {"final: est. sigma, band 3 s, scale 2 s, 2 rounds", 4, 0, 3, 0, 2, 2},
+        {"final: est. sigma, band 5 s, scale 2 s, 2 rounds", 4, 0, 5, 0, 2, 2},
+        {"final: est. sigma, band 4 s, scale 3 s, 2 rounds", 4, 0, 4, 0, 3, 2},
+        {"final: est. sigma, band 6 s, scale 3 s, 2 rounds", 4, 0, 6, 0, 3, 2},
+        {"final: est. sigma (window 6), band 4 s, scale 2 s, 2 rounds", 6, 0, 4, 0, 2, 2},
+        {"final: est. sigma, band max(thr, 4 s), scale max(thr/2, 2 s), 2 rounds", 4, 1, 4, 0.5, 2,
+         2},
+    };
+    for (const FinalVariant& v : finals)
+        candidates.push_back(
+            {v.name, [v](const Input& in) {
+                 ce::refine::FinalRefinementSettings fs;
+                 fs.noiseWindow = v.window;
+                 fs.minBand = v.minBand;
+                 fs.bandInSigmas = v.bandSigmas;
+                 fs.minScale = v.minScale;
+                 fs.scaleInSigmas = v.scaleSigmas;
+                 fs.rounds = v.rounds;
+                 Output o;
+                 o.E =
+                     ce::refine::refineFinal(*in.problem, in.searchE, in.problem->threshold, fs).E;
+                 o.mask = inliersOf(o.E, *in.problem, in.problem->threshold);
+                 return o;
+             }});
     candidates.push_back({"all points, Cauchy 0.5 thr, 100 it, tol 1e-12", [](const Input& in) {
                               std::vector<uchar> all(in.problem->size(), 1);
                               return onPoints(in, all, 0.5 * in.problem->threshold,
@@ -313,6 +366,8 @@ int main(int argc, char** argv)
         "---|\n");
     for (double ratio : args.ratios) {
         std::vector<std::vector<PoseOutcome>> outcomes(candidates.size());
+        std::vector<double> searchMs;
+        double samples = 0;
         for (int p = 0; p < args.problems; ++p) {
             essential_test::SceneConfig cfg =
                 wide ? essential_test::wideCameraConfig() : essential_test::SceneConfig();
@@ -329,10 +384,14 @@ int main(int argc, char** argv)
             settings.confidence = params.confidence;
             settings.maxIters = args.maxIters;
             settings.loIterations = args.lo;
-            settings.loScale = 0.5 * problem.threshold;
+            settings.loScale = args.loScale * problem.threshold;
+            settings.loBand = args.loBand;
             settings.sprt = params.sprt;
+            const double s0 = threadCpuMs();
             const ce::ransac::SearchResult found =
                 ce::ransac::searchMsac(problem, *solver, rng, settings);
+            searchMs.push_back(threadCpuMs() - s0);
+            samples += found.iterations;
             for (size_t c = 0; c < candidates.size(); ++c) {
                 PoseOutcome o;
                 if (found.found) {
@@ -350,6 +409,10 @@ int main(int argc, char** argv)
                 outcomes[c].push_back(o);
             }
         }
+        std::printf(
+            "| %.0f%% | (search: median %.3f ms CPU, %.0f samples on average) | | | | | | | "
+            "| |\n",
+            100 * ratio, median(searchMs), samples / args.problems);
         for (size_t c = 0; c < candidates.size(); ++c) {
             const AccuracySummary a = summarise(outcomes[c]);
             std::printf("| %.0f%% | %s | %.3f | %.3f | %.3f | %.3f | %.4f | %.4f | %.4f | %.0f |\n",

@@ -6,14 +6,39 @@
 #include "pose/pose_recovery.hpp"
 #include "ransac/msac_score.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
 namespace cv {
 namespace essential {
 namespace refine {
 
+namespace {
+
 /** IRLS fits the five degrees of freedom of E: fewer points leave it undetermined. */
 constexpr int kMinPoints = 5;
+
+/** 1 / Phi^-1(3/4): the median of |s| for s ~ N(0, sigma^2) is sigma / this. */
+constexpr double kMadToSigma = 1.4826;
+
+} // namespace
+
+double estimateNoise(const Problem& problem, const Matx33d& E, double threshold, double window,
+                     int minPoints)
+{
+    const int n = problem.size();
+    std::vector<double> squared(static_cast<size_t>(n));
+    ransac::sampsonErrors(E, problem, squared.data());
+    const double limit = window * window * threshold * threshold;
+    size_t kept = 0;
+    for (int i = 0; i < n; ++i)
+        if (squared[i] <= limit) squared[kept++] = squared[i]; // NaN (no distance) is dropped
+    if (static_cast<int>(kept) < minPoints) return 0.0;
+    const size_t middle = kept / 2;
+    std::nth_element(squared.begin(), squared.begin() + middle, squared.begin() + kept);
+    return kMadToSigma * std::sqrt(squared[middle]);
+}
 
 FinalRefinementResult refineFinal(const Problem& problem, const Matx33d& E0, double threshold,
                                   const FinalRefinementSettings& settings)
@@ -21,35 +46,46 @@ FinalRefinementResult refineFinal(const Problem& problem, const Matx33d& E0, dou
     FinalRefinementResult result;
     result.E = E0;
     const int n = problem.size();
-    std::vector<uchar> use(static_cast<size_t>(n));
-    int count = ransac::inlierMask(E0, problem, settings.band * threshold, use.data());
-    if (settings.inFrontOnly && count >= kMinPoints) {
-        pose::PoseResult pose;
-        // Writes the in-front test into `use` in place; an E0 with no decomposition keeps the
-        // band's points (it cannot happen for a search winner, which has one).
-        std::vector<uchar> inFront(use);
-        if (pose::recoverPoseNormalised(E0, problem.p1.data(), problem.p2.data(), n, use.data(),
-                                        inFront.data(), pose)) {
-            use.swap(inFront);
-            count = pose.inFront;
-        }
-    }
-    if (count < kMinPoints) return result;
+    double sigma = 0.0;
+    if (settings.noiseWindow > 0.0)
+        sigma =
+            estimateNoise(problem, E0, threshold, settings.noiseWindow, settings.minNoisePoints);
+    if (!(sigma > 0.0)) sigma = settings.assumedNoise * threshold;
+    result.noise = sigma;
+    const double band = std::max(settings.minBand * threshold, settings.bandInSigmas * sigma);
+    const double scale = std::max(settings.minScale * threshold, settings.scaleInSigmas * sigma);
+    std::vector<uchar> use(static_cast<size_t>(n)), inFront(static_cast<size_t>(n));
     std::vector<Point2d> a, b;
-    a.reserve(static_cast<size_t>(count));
-    b.reserve(static_cast<size_t>(count));
-    for (int i = 0; i < n; ++i)
-        if (use[i]) {
-            a.push_back(problem.p1[i]);
-            b.push_back(problem.p2[i]);
+    Matx33d E = E0;
+    for (int round = 0; round < settings.rounds; ++round) {
+        int count = ransac::inlierMask(E, problem, band, use.data());
+        if (settings.inFrontOnly && count >= kMinPoints) {
+            // An E with no decomposition (it cannot happen for a search winner, which has one)
+            // keeps the band's points.
+            pose::PoseResult pose;
+            if (pose::recoverPoseNormalised(E, problem.p1.data(), problem.p2.data(), n, use.data(),
+                                            inFront.data(), pose)) {
+                use.swap(inFront);
+                count = pose.inFront;
+            }
         }
-    const Problem selected = makeProblem(std::move(a), std::move(b), threshold);
-    const IrlsResult refined =
-        refineIrls(selected, E0, settings.scaleInThresholds * threshold, settings.irls);
-    result.E = refined.E;
-    result.iterations = refined.iterations;
-    result.pointsUsed = count;
-    result.improved = refined.improved;
+        if (count < kMinPoints) break;
+        a.clear();
+        b.clear();
+        for (int i = 0; i < n; ++i)
+            if (use[i]) {
+                a.push_back(problem.p1[i]);
+                b.push_back(problem.p2[i]);
+            }
+        const Problem selected = makeProblem(a, b, threshold);
+        const IrlsResult refined = refineIrls(selected, E, scale, settings.irls);
+        result.iterations += refined.iterations;
+        result.pointsUsed = count;
+        if (!refined.improved) break;
+        E = refined.E;
+        result.improved = true;
+    }
+    result.E = E;
     return result;
 }
 

@@ -202,22 +202,27 @@ int main(int argc, char** argv)
         const char* name;
         double window, minBand, bandSigmas, minScale, scaleSigmas;
         int rounds;
+        double tukey;
     };
     const FinalVariant finals[] = {
-        {"final: sigma = thr/2, band 2 thr, scale thr", 0, 2, 4, 1, 2, 1},
-        {"final: sigma = thr/2, band 2 thr, scale thr, 2 rounds", 0, 2, 4, 1, 2, 2},
-        {"final: est. sigma, band max(2 thr, 4 s), scale max(thr, 2 s)", 4, 2, 4, 1, 2, 1},
-        {"final: est. sigma, band max(2 thr, 4 s), scale max(thr, 2 s), 2 rounds", 4, 2, 4, 1, 2,
-         2},
-        {"final: est. sigma, band 4 s, scale 2 s", 4, 0, 4, 0, 2, 1},
-        {"final: est. sigma, band 4 s, scale 2 s, 2 rounds", 4, 0, 4, 0, 2, 2},
-        {"final: est. sigma, band 3 s, scale 2 s, 2 rounds", 4, 0, 3, 0, 2, 2},
-        {"final: est. sigma, band 5 s, scale 2 s, 2 rounds", 4, 0, 5, 0, 2, 2},
-        {"final: est. sigma, band 4 s, scale 3 s, 2 rounds", 4, 0, 4, 0, 3, 2},
-        {"final: est. sigma, band 6 s, scale 3 s, 2 rounds", 4, 0, 6, 0, 3, 2},
-        {"final: est. sigma (window 6), band 4 s, scale 2 s, 2 rounds", 6, 0, 4, 0, 2, 2},
+        {"final: sigma = thr/2, band 2 thr, scale thr", 0, 2, 4, 1, 2, 1, 0},
+        {"final: sigma = thr/2, band 2 thr, scale thr, 2 rounds", 0, 2, 4, 1, 2, 2, 0},
+        {"final: est. sigma, band max(2 thr, 4 s), scale max(thr, 2 s)", 4, 2, 4, 1, 2, 1, 0},
+        {"final: est. sigma, band max(2 thr, 4 s), scale max(thr, 2 s), 2 rounds", 4, 2, 4, 1, 2, 2,
+         0},
+        {"final: est. sigma, band 4 s, scale 2 s", 4, 0, 4, 0, 2, 1, 0},
+        {"final: est. sigma, band 4 s, scale 2 s, 2 rounds", 4, 0, 4, 0, 2, 2, 0},
+        {"final: est. sigma, band 3 s, scale 2 s, 2 rounds", 4, 0, 3, 0, 2, 2, 0},
+        {"final: est. sigma, band 5 s, scale 2 s, 2 rounds", 4, 0, 5, 0, 2, 2, 0},
+        {"final: est. sigma, band 4 s, scale 3 s, 2 rounds", 4, 0, 4, 0, 3, 2, 0},
+        {"final: est. sigma, band 6 s, scale 3 s, 2 rounds", 4, 0, 6, 0, 3, 2, 0},
+        {"final: est. sigma (window 6), band 4 s, scale 2 s, 2 rounds", 6, 0, 4, 0, 2, 2, 0},
         {"final: est. sigma, band max(thr, 4 s), scale max(thr/2, 2 s), 2 rounds", 4, 1, 4, 0.5, 2,
-         2},
+         2, 0},
+        {"final: est. sigma, Cauchy then Tukey 4.685 s", 4, 2, 4, 1, 2, 2, 4.685},
+        {"final: est. sigma, Cauchy then Tukey 3.5 s", 4, 2, 4, 1, 2, 2, 3.5},
+        {"final: est. sigma, Cauchy then Tukey 6 s", 4, 2, 4, 1, 2, 2, 6},
+        {"final: est. sigma, Cauchy then Tukey 4.685 s twice", 4, 2, 4, 1, 2, 3, 4.685},
     };
     for (const FinalVariant& v : finals)
         candidates.push_back(
@@ -229,6 +234,7 @@ int main(int argc, char** argv)
                  fs.minScale = v.minScale;
                  fs.scaleInSigmas = v.scaleSigmas;
                  fs.rounds = v.rounds;
+                 fs.tukeyInSigmas = v.tukey;
                  Output o;
                  o.E =
                      ce::refine::refineFinal(*in.problem, in.searchE, in.problem->threshold, fs).E;

@@ -46,18 +46,26 @@ FinalRefinementResult refineFinal(const Problem& problem, const Matx33d& E0, dou
     FinalRefinementResult result;
     result.E = E0;
     const int n = problem.size();
-    double sigma = 0.0;
-    if (settings.noiseWindow > 0.0)
-        sigma =
-            estimateNoise(problem, E0, threshold, settings.noiseWindow, settings.minNoisePoints);
-    if (!(sigma > 0.0)) sigma = settings.assumedNoise * threshold;
-    result.noise = sigma;
-    const double band = std::max(settings.minBand * threshold, settings.bandInSigmas * sigma);
-    const double scale = std::max(settings.minScale * threshold, settings.scaleInSigmas * sigma);
     std::vector<uchar> use(static_cast<size_t>(n)), inFront(static_cast<size_t>(n));
     std::vector<Point2d> a, b;
     Matx33d E = E0;
     for (int round = 0; round < settings.rounds; ++round) {
+        // The noise, band and scale from the current model: a model that is off inflates its
+        // residuals, so each round re-estimates them around the last one's result.
+        double sigma = 0.0;
+        if (settings.noiseWindow > 0.0)
+            sigma =
+                estimateNoise(problem, E, threshold, settings.noiseWindow, settings.minNoisePoints);
+        if (!(sigma > 0.0)) sigma = settings.assumedNoise * threshold;
+        result.noise = sigma;
+        const bool tukey = round > 0 && settings.tukeyInSigmas > 0.0;
+        const double scale =
+            tukey ? settings.tukeyInSigmas * sigma
+                  : std::max(settings.minScale * threshold, settings.scaleInSigmas * sigma);
+        double band = std::max(settings.minBand * threshold, settings.bandInSigmas * sigma);
+        if (tukey) band = std::max(band, scale);
+        IrlsSettings irls = settings.irls;
+        irls.loss = tukey ? RobustLoss::Tukey : RobustLoss::Cauchy;
         int count = ransac::inlierMask(E, problem, band, use.data());
         if (settings.inFrontOnly && count >= kMinPoints) {
             // An E with no decomposition (it cannot happen for a search winner, which has one)
@@ -78,12 +86,15 @@ FinalRefinementResult refineFinal(const Problem& problem, const Matx33d& E0, dou
                 b.push_back(problem.p2[i]);
             }
         const Problem selected = makeProblem(a, b, threshold);
-        const IrlsResult refined = refineIrls(selected, E, scale, settings.irls);
+        const IrlsResult refined = refineIrls(selected, E, scale, irls);
         result.iterations += refined.iterations;
         result.pointsUsed = count;
-        if (!refined.improved) break;
-        E = refined.E;
-        result.improved = true;
+        // A round that cannot improve (the start is already the minimum of its loss, as after a
+        // local optimisation with the same loss) still leaves the next round its own loss.
+        if (refined.improved) {
+            E = refined.E;
+            result.improved = true;
+        }
     }
     result.E = E;
     return result;

@@ -203,6 +203,7 @@ int main(int argc, char** argv)
         double window, minBand, bandSigmas, minScale, scaleSigmas;
         int rounds;
         double tukey;
+        int firstTukey = 1;
     };
     const FinalVariant finals[] = {
         {"final: sigma = thr/2, band 2 thr, scale thr", 0, 2, 4, 1, 2, 1, 0},
@@ -223,6 +224,9 @@ int main(int argc, char** argv)
         {"final: est. sigma, Cauchy then Tukey 3.5 s", 4, 2, 4, 1, 2, 2, 3.5},
         {"final: est. sigma, Cauchy then Tukey 6 s", 4, 2, 4, 1, 2, 2, 6},
         {"final: est. sigma, Cauchy then Tukey 4.685 s twice", 4, 2, 4, 1, 2, 3, 4.685},
+        {"final: est. sigma, Tukey 4.685 s, 1 round", 4, 2, 4, 1, 2, 1, 4.685, 0},
+        {"final: est. sigma, Tukey 4.685 s, 2 rounds", 4, 2, 4, 1, 2, 2, 4.685, 0},
+        {"final: library default", 4, 2, 4, 1, 2, -1, 4.685, 0},
     };
     for (const FinalVariant& v : finals)
         candidates.push_back(
@@ -233,8 +237,12 @@ int main(int argc, char** argv)
                  fs.bandInSigmas = v.bandSigmas;
                  fs.minScale = v.minScale;
                  fs.scaleInSigmas = v.scaleSigmas;
-                 fs.rounds = v.rounds;
+                 if (v.rounds > 0) { // else the library's rule
+                     fs.maxRounds = v.rounds;
+                     fs.nextRoundBelow = 1e300; // every round runs
+                 }
                  fs.tukeyInSigmas = v.tukey;
+                 fs.firstTukeyRound = v.firstTukey;
                  Output o;
                  o.E =
                      ce::refine::refineFinal(*in.problem, in.searchE, in.problem->threshold, fs).E;

@@ -59,9 +59,9 @@ std::vector<double> dropInErrors(double inlierRatio, int problems, int& reliable
 TEST(PoseAccuracy, DropInAucAtOneDegreeIsAboveItsFloor)
 {
     // 150 fixed problems per inlier ratio (N = 500, noise 0.5 px, threshold 1 px). Measured AUC@1:
-    // 0.942 at 90% and 0.916 at 50% inliers; with the final refinement on all points (before the
-    // points near the winner, the noise-following scale and the Tukey round) 0.930 and 0.883. The
-    // floors sit between the two, so that a return of the old final step fails and an unrelated
+    // 0.943 at 90% and 0.918 at 50% inliers; with the final refinement on all points (before the
+    // points near the winner and the Tukey loss at a scale that follows the noise) 0.930 and 0.883.
+    // The floors sit between the two, so that a return of the old final step fails and an unrelated
     // change of the search's samples (which moves these figures by a few thousandths) does not.
     struct Case
     {

@@ -46,19 +46,20 @@ FinalRefinementResult refineFinal(const Problem& problem, const Matx33d& E0, dou
     FinalRefinementResult result;
     result.E = E0;
     const int n = problem.size();
-    std::vector<uchar> use(static_cast<size_t>(n)), inFront(static_cast<size_t>(n));
-    std::vector<Point2d> a, b;
-    Matx33d E = E0;
-    for (int round = 0; round < settings.rounds; ++round) {
-        // The noise, band and scale from the current model: a model that is off inflates its
-        // residuals, so each round re-estimates them around the last one's result.
+    auto noiseAt = [&](const Matx33d& E) {
         double sigma = 0.0;
         if (settings.noiseWindow > 0.0)
             sigma =
                 estimateNoise(problem, E, threshold, settings.noiseWindow, settings.minNoisePoints);
-        if (!(sigma > 0.0)) sigma = settings.assumedNoise * threshold;
+        return sigma > 0.0 ? sigma : settings.assumedNoise * threshold;
+    };
+    std::vector<uchar> use(static_cast<size_t>(n)), inFront(static_cast<size_t>(n));
+    std::vector<Point2d> a, b;
+    Matx33d E = E0;
+    double sigma = noiseAt(E);
+    for (int round = 0; round < settings.maxRounds; ++round) {
         result.noise = sigma;
-        const bool tukey = round > 0 && settings.tukeyInSigmas > 0.0;
+        const bool tukey = round >= settings.firstTukeyRound && settings.tukeyInSigmas > 0.0;
         const double scale =
             tukey ? settings.tukeyInSigmas * sigma
                   : std::max(settings.minScale * threshold, settings.scaleInSigmas * sigma);
@@ -89,12 +90,19 @@ FinalRefinementResult refineFinal(const Problem& problem, const Matx33d& E0, dou
         const IrlsResult refined = refineIrls(selected, E, scale, irls);
         result.iterations += refined.iterations;
         result.pointsUsed = count;
+        ++result.rounds;
         // A round that cannot improve (the start is already the minimum of its loss, as after a
         // local optimisation with the same loss) still leaves the next round its own loss.
         if (refined.improved) {
             E = refined.E;
             result.improved = true;
         }
+        if (round + 1 == settings.maxRounds) break;
+        // Another round only if the noise around the result is clearly below the noise the round
+        // was set up with: the start was off, and its band and scale were too wide.
+        const double next = noiseAt(E);
+        if (!(next < settings.nextRoundBelow * sigma)) break;
+        sigma = next;
     }
     result.E = E;
     return result;

@@ -45,29 +45,30 @@ struct FinalRefinementSettings
     pose::recoverPoseNormalised): about half the wrong matches that fall near their epipolar line
     are behind a camera. AUC@1 at 25% inliers 0.823 without, 0.869 with. */
     bool inFrontOnly = true;
-    /** Cauchy scale: max(minScale thresholds, scaleInSigmas sigma). With the outliers' pull gone
-    (the points above) a wider loss keeps more of the inliers' information: 1 threshold (2 sigmas)
-    beats 0.5 by 0.005 AUC@1 on average over 90/70/50/25% inliers, 1.5 is no better. The floor
-    keeps the loss from shrinking to nothing on noise-free data. */
+    /** Loss: Tukey's biweight at scale tukeyInSigmas sigma (0: Cauchy, below) from round
+    firstTukeyRound on. A wrong match near its epipolar line pulls a Cauchy minimum (by c^2 / s at
+    distance s); Tukey's weight is 0 beyond c and small near it, so on noise-free data the pose is
+    exact (at most 2.4e-6 degrees, the resolution of the error measure, with 30% and 60% wrong
+    matches; Cauchy: 0.017 / 0.2 degrees). 4.685 sigma is the usual 95%-efficiency constant (3.5
+    and 6 were worse by up to 0.015 and 0.006 AUC@1). One Tukey round from the search winner
+    against Cauchy (one round, 2 sigma): AUC@1 0.944 / 0.917 / 0.875 against 0.944 / 0.916 / 0.866
+    at 90 / 50 / 25% inliers, 0.799 / 0.711 against 0.792 / 0.696 with the wide camera; the same
+    from search winners without local optimisation (0.943 / 0.911). */
+    double tukeyInSigmas = 4.685;
+    int firstTukeyRound = 0;
+    /** Cauchy scale for the rounds before firstTukeyRound: max(minScale thresholds, scaleInSigmas
+    sigma). 1 threshold (2 sigmas) beat 0.5 by 0.005 AUC@1 on average over 90/70/50/25% inliers;
+    1.5 was no better. */
     double minScale = 1.0;
     double scaleInSigmas = 2.0;
-    /** Rounds of noise estimate, selection and refinement, each around the last one's result.
-    The noise estimated around a start that is off is too large, and so are the band and the loss
-    derived from it; the second round's estimate is that of the refined model. From starts 0.1 to
-    0.3 degrees off the truth (rotation; 3 times that in translation) on 10 scenes with 40%
-    outliers, two rounds land within 1e-4 (essential distance) of the refinement that starts at the
-    truth on 9 scenes (test_final_refinement.cpp), one round up to 1e-2 away on 3. A third round
-    changed nothing measurable. */
-    int rounds = 2;
-    /** The rounds after the first refine with Tukey's biweight at scale tukeyInSigmas sigma (0:
-    Cauchy in every round), on the points within the larger of that scale and the band. A wrong
-    match near its epipolar line pulls the Cauchy minimum (by c^2 / s at distance s); Tukey's
-    weight is 0 beyond c and small near it, so on noise-free data the pose is exact (at most 2.4e-6
-    degrees, the resolution of the error measure, with 30% and 60% wrong matches; Cauchy in both
-    rounds: 0.017 / 0.2 degrees). 4.685 sigma is the usual 95%-efficiency constant; against two
-    Cauchy rounds, AUC@1 changes by -0.001 to +0.007 over 90/50/25% inliers and the two cameras
-    (3.5 sigma: -0.005 to 0; 6 sigma: -0.004 to +0.006), for about 40 us more at 90% inliers. */
-    double tukeyInSigmas = 4.685;
+    /** Rounds of selection and refinement, each around the last one's result: another one (up to
+    maxRounds) when the noise estimated around the result is below nextRoundBelow times the noise
+    the round was set up with. A start that is off inflates the noise estimate, and the band and
+    the loss follow it; the search winners do not (one round, whose result a second round changed
+    by -0.001 to +0.002 AUC@1 for 30 us more), starts 0.1 to 0.3 degrees off the truth do
+    (test_final_refinement.cpp). */
+    int maxRounds = 2;
+    double nextRoundBelow = 0.8;
     /** The IRLS's cap and stopping rule (IrlsSettings): on these points, caps from 5 to 100 and
     relative tolerances from 1e-6 to 1e-10 gave AUC@1 within 0.002 of each other. */
     IrlsSettings irls;
@@ -77,6 +78,7 @@ struct FinalRefinementResult
 {
     Matx33d E;
     int iterations = 0;    //!< IRLS iterations over all rounds
+    int rounds = 0;        //!< rounds run
     int pointsUsed = 0;    //!< correspondences the last refinement saw
     double noise = 0.0;    //!< sigma used (normalised units)
     bool improved = false; //!< a refinement lowered its cost (E differs from the start)
@@ -89,7 +91,7 @@ double estimateNoise(const Problem& problem, const Matx33d& E, double threshold,
 
 /** Refines E0, the search winner for the (normalised) inlier threshold `threshold`, as
 FinalRefinementSettings describes: the points near E0 (and in front of both cameras for its pose)
-by IRLS with a Cauchy loss whose scale follows the estimated noise. Fewer than 5 such points leave
+by IRLS with a robust loss whose scale follows the estimated noise. Fewer than 5 such points leave
 E0 unchanged. */
 FinalRefinementResult
 refineFinal(const Problem& problem, const Matx33d& E0, double threshold,

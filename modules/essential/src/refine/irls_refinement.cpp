@@ -125,7 +125,10 @@ ESSENTIAL_INLINE_INTO_CLONES double evaluateLoss(const Problem& p, const Essenti
             S[i] = sv;
             U[i] = t.D > 0.0 ? u : -1.0; // -1: no Sampson distance, not in the cost
             if (Tukey) {
-                const double v = std::max(0.0, 1.0 - u);
+                // max(0, 1 - u) without a comparison, so that the loop stays branch-free and
+                // vectorised (exact: d + |d| is 2d or 0, and the halving is exact).
+                const double d = 1.0 - u;
+                const double v = 0.5 * (d + std::abs(d));
                 W[i] = v * v;
             } else {
                 W[i] = 1.0 / (1.0 + u);

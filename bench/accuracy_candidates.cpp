@@ -30,6 +30,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -77,9 +78,12 @@ Args parse(int argc, char** argv)
             a.seed = std::strtoull(v.c_str(), nullptr, 10);
         else if (k == "--ratios")
             a.ratios = numbers(v);
-        else if (k == "--only")
-            a.only = split(v);
-        else {
+        else if (k == "--only") {
+            std::stringstream ss(v); // ';'-separated: the names hold commas
+            std::string part;
+            while (std::getline(ss, part, ';'))
+                a.only.push_back(part);
+        } else {
             std::fprintf(stderr, "unknown option %s\n", k.c_str());
             std::exit(2);
         }

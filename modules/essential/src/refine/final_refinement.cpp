@@ -61,7 +61,7 @@ FinalRefinementResult refineFinal(const Problem& problem, const Matx33d& E0, dou
         result.noise = sigma;
         const bool tukey = round >= settings.firstTukeyRound && settings.tukeyInSigmas > 0.0;
         const double scale =
-            tukey ? settings.tukeyInSigmas * sigma
+            tukey ? std::max(settings.tukeyInSigmas * sigma, settings.minTukeyScale * threshold)
                   : std::max(settings.minScale * threshold, settings.scaleInSigmas * sigma);
         double band = std::max(settings.minBand * threshold, settings.bandInSigmas * sigma);
         if (tukey) band = std::max(band, scale);

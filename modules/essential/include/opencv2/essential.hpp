@@ -18,8 +18,10 @@ hypotheses come from a tiny Gauss-Newton or Levenberg-Marquardt optimiser on a m
 correspondences in a 5-DOF parameterisation (rotation by the SO(3) exponential map, translation as a
 rotated unit vector), or from a speed-tuned Nister five-point solver (the default draws from both
 in turn), are verified by Wald's SPRT and scored by MSAC on the Sampson distance, each
-new best model is polished by a few iterations of iteratively reweighted least squares (IRLS) on its
-inliers (local optimisation), and the winner is refined on all points by IRLS.
+new best model is polished by a few iterations of iteratively reweighted least squares (IRLS) on the
+points near it (local optimisation), and the winner is refined by IRLS with Tukey's biweight at a
+scale that follows the estimated noise, on the points near it and in front of both cameras
+(docs/ACCURACY.md).
 
 findEssentialMatIter() has every overload of `cv::findEssentialMat` (OpenCV 4.6) with the same
 arguments, defaults, return value and mask, so renaming a call site is enough to switch.
@@ -35,8 +37,9 @@ Differences from `cv::findEssentialMat` that a caller may notice:
   EssentialReport of the module's own overload says so (EssentialReport::degenerate);
 - `maxIters` keeps OpenCV's meaning of a confidence budget: an iterative solver that solves only a
   fraction s of outlier-free samples may draw maxIters / s samples (see EssentialParams::maxIters);
-- the returned E is refined on all points by IRLS (set EssentialParams::refine = false in the
-  module's own overload to skip this), and the mask is that of the refined E;
+- the returned E is refined by IRLS on the points near the search winner (set
+  EssentialParams::refine = false in the module's own overload to skip this), and the mask is that
+  of the refined E;
 - the USAC method flags and the UsacParams overload map onto the module's own engine (adaptive
   MSAC with IRLS local optimisation, PROSAC, SPRT) as in the tables below, in the spirit of
   OpenCV's usac::setParameters; OpenCV's graph-cut and sigma-consensus LO, MAGSAC++ scoring, NAPSAC

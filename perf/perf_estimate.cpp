@@ -13,14 +13,17 @@
 // Counters, per run: median_ms (median of the per-call wall times: estimate + recoverPose), p90_ms,
 // median_cpu_ms (median of the per-call CPU times of the thread), and
 // reliable (fraction with rotation error < 2 deg and translation direction error < 5 deg, the
-// issue's criterion). Repetitions are interleaved at random with the other benchmarks so that the
-// load of a shared machine falls on every method alike; scripts/perf.sh takes the median of
-// median_ms and the mean of reliable over the repetitions.
+// issue's criterion), auc1 and auc5 (the AUC up to 1 and 5 degrees of max(rotation, translation
+// direction) error, test/pose_auc.hpp; docs/ACCURACY.md). Repetitions are interleaved at random
+// with the other benchmarks so that the load of a shared machine falls on every method alike;
+// scripts/perf.sh takes the median of median_ms and the mean of reliable, auc1 and auc5 over the
+// repetitions.
 //
 // Method names: essential (the drop-in overload with OpenCV's default arguments),
 // essential:<solver>:<engine> (the EssentialParams overload with that solver and engine),
 // cv_RANSAC, cv_USAC_MAGSAC, cv_USAC_ACCURATE (cv::findEssentialMat + cv::recoverPose).
 
+#include "pose_auc.hpp"
 #include "synthetic_scene.hpp"
 
 #include <opencv2/calib3d.hpp>
@@ -138,6 +141,8 @@ void runEstimates(benchmark::State& state, const Estimator& estimate, int n, int
     ms.reserve(scenes.size());
     cpuMs.reserve(scenes.size());
     int reliable = 0;
+    std::vector<double> errors; // max(rotation, translation direction) error, degrees
+    errors.reserve(scenes.size());
     size_t i = 0;
     for (auto _ : state) {
         const auto& s = scenes[i++ % scenes.size()];
@@ -150,13 +155,17 @@ void runEstimates(benchmark::State& state, const Estimator& estimate, int n, int
         ms.push_back(
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
                 .count());
-        reliable += ok && essential_test::rotationErrorDeg(R, s.R) < 2.0 &&
-                    essential_test::translationErrorDeg(t, s.t) < 5.0;
+        const double rotErr = ok ? essential_test::rotationErrorDeg(R, s.R) : 180.0;
+        const double transErr = ok ? essential_test::translationErrorDeg(t, s.t) : 180.0;
+        reliable += rotErr < 2.0 && transErr < 5.0;
+        errors.push_back(std::max(rotErr, transErr));
     }
     state.counters["median_ms"] = quantile(ms, 0.5);
     state.counters["p90_ms"] = quantile(ms, 0.9);
     state.counters["median_cpu_ms"] = quantile(cpuMs, 0.5);
     state.counters["reliable"] = double(reliable) / double(std::max<size_t>(1, ms.size()));
+    state.counters["auc1"] = essential_test::poseAuc(errors, 1.0);
+    state.counters["auc5"] = essential_test::poseAuc(errors, 5.0);
 }
 
 void registerEstimate(const std::string& method, const Estimator& estimate, int n, int ratio)

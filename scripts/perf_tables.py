@@ -42,6 +42,13 @@ def mean(entries, key):
     return statistics.mean(values) if values else float("nan")
 
 
+def auc(entries):
+    """Mean over the repetitions of the AUC@1 and AUC@5 counters ("-" for a run without them)."""
+    if not any("auc1" in e for e in entries):
+        return "-"
+    return f"{mean(entries, 'auc1'):.3f} / {mean(entries, 'auc5'):.3f}"
+
+
 def estimate_rows(runs):
     table = defaultdict(dict)  # (n, ratio) -> method -> entries
     for name, entries in runs.items():
@@ -53,9 +60,9 @@ def estimate_rows(runs):
 
 def targets_table(table):
     out = []
-    out.append("| N | inliers | method | reliable (2/5 deg) | median CPU ms | median wall ms "
-               "| CPU time / ours | target |")
-    out.append("|---|---|---|---|---|---|---|---|")
+    out.append("| N | inliers | method | reliable (2/5 deg) | AUC@1 / AUC@5 | median CPU ms "
+               "| median wall ms | CPU time / ours | target |")
+    out.append("|---|---|---|---|---|---|---|---|---|")
     summary = []
     for (n, ratio) in sorted(table, key=lambda k: (k[0], -k[1])):
         methods = table[(n, ratio)]
@@ -64,8 +71,8 @@ def targets_table(table):
         ours = methods["essential"]
         ours_cpu = med(ours, "median_cpu_ms")
         ours_rel = mean(ours, "reliable")
-        out.append(f"| {n} | {ratio}% | **essential** (drop-in) | {ours_rel:.3f} | {ours_cpu:.3f} "
-                   f"| {med(ours, 'median_ms'):.3f} | 1.0x | |")
+        out.append(f"| {n} | {ratio}% | **essential** (drop-in) | {ours_rel:.3f} | {auc(ours)} "
+                   f"| {ours_cpu:.3f} | {med(ours, 'median_ms'):.3f} | 1.0x | |")
         for base in BASELINES:
             if base not in methods:
                 continue
@@ -85,7 +92,7 @@ def targets_table(table):
                 target = f"{'met' if ok else 'NOT met'}: faster, reliability {ours_rel:.3f} >= {rel:.3f}"
             if target:
                 summary.append((n, ratio, base, ratio_x, ours_rel, rel, target.split(":")[0]))
-            out.append(f"| {n} | {ratio}% | {base} | {rel:.3f} | {cpu:.3f} "
+            out.append(f"| {n} | {ratio}% | {base} | {rel:.3f} | {auc(e)} | {cpu:.3f} "
                        f"| {med(e, 'median_ms'):.3f} | {ratio_x:.1f}x | {target} |")
     return out, summary
 

@@ -31,6 +31,9 @@ struct SceneConfig
     double minDepth = 1.0; //!< inverse depth uniform in [1 / maxDepth, 1 / minDepth]
     double maxDepth = 1000.0;
     double halfFov = 1.0; //!< tan(half field of view): 1 for 90 degrees
+    /** tan(half the vertical field of view) if positive; otherwise the field of view is square
+    (halfFov both ways). */
+    double halfFovY = 0.0;
     double focal = 500.0; //!< pixel focal length of the camera used for pixel coordinates
     double cx = 500.0, cy = 500.0;
 };
@@ -70,6 +73,21 @@ inline cv::Matx33d axisAngle(const cv::Vec3d& axis, double angle)
     return cv::Matx33d::eye() + std::sin(angle) * W + (1.0 - std::cos(angle)) * (W * W);
 }
 
+/** The wide-camera variant of the protocol: a 1280 x 720 image with a 60 degree horizontal field
+of view (focal length 640 / tan(30 deg) = 1108.5 px, principal point at the image centre) and noise
+0.0015 normalised units (1.66 px); motion and depths as in the paper's protocol. */
+inline SceneConfig wideCameraConfig()
+{
+    SceneConfig cfg;
+    cfg.halfFov = std::tan(30.0 * CV_PI / 180.0);
+    cfg.halfFovY = cfg.halfFov * 720.0 / 1280.0;
+    cfg.focal = 640.0 / cfg.halfFov;
+    cfg.cx = 639.5;
+    cfg.cy = 359.5;
+    cfg.noiseSigma = 0.0015;
+    return cfg;
+}
+
 /** A scene for the given config and seed; the same seed gives the same scene. */
 inline SyntheticScene makeScene(const SceneConfig& cfg, uint64_t seed)
 {
@@ -87,6 +105,7 @@ inline SyntheticScene makeScene(const SceneConfig& cfg, uint64_t seed)
     const int numInliers = static_cast<int>(std::lround(cfg.numPoints * cfg.inlierRatio));
     const double invMin = 1.0 / cfg.maxDepth, invMax = 1.0 / cfg.minDepth;
     const double f = cfg.halfFov;
+    const double fy = cfg.halfFovY > 0.0 ? cfg.halfFovY : cfg.halfFov;
     struct Match
     {
         cv::Point2d a, b;
@@ -95,20 +114,20 @@ inline SyntheticScene makeScene(const SceneConfig& cfg, uint64_t seed)
     std::vector<Match> matches;
     matches.reserve(static_cast<size_t>(cfg.numPoints));
     for (int tries = 0; static_cast<int>(matches.size()) < numInliers && tries < 1000000; ++tries) {
-        const double u = (2.0 * uni(g) - 1.0) * f, v = (2.0 * uni(g) - 1.0) * f;
+        const double u = (2.0 * uni(g) - 1.0) * f, v = (2.0 * uni(g) - 1.0) * fy;
         const double depth = 1.0 / (invMin + uni(g) * (invMax - invMin));
         const cv::Vec3d X1(u * depth, v * depth, depth);
         const cv::Vec3d X2 = s.R * X1 + s.baseline * s.t;
         if (X2[2] <= 1e-9) continue;
         const double u2 = X2[0] / X2[2], v2 = X2[1] / X2[2];
-        if (std::abs(u2) > f || std::abs(v2) > f) continue; // not visible in view 2
+        if (std::abs(u2) > f || std::abs(v2) > fy) continue; // not visible in view 2
         matches.push_back({cv::Point2d(u + noise(g), v + noise(g)),
                            cv::Point2d(u2 + noise(g), v2 + noise(g)), true});
     }
     // Wrong matches: independent uniform positions in both images.
     while (static_cast<int>(matches.size()) < cfg.numPoints) {
-        matches.push_back({cv::Point2d((2 * uni(g) - 1) * f, (2 * uni(g) - 1) * f),
-                           cv::Point2d((2 * uni(g) - 1) * f, (2 * uni(g) - 1) * f), false});
+        matches.push_back({cv::Point2d((2 * uni(g) - 1) * f, (2 * uni(g) - 1) * fy),
+                           cv::Point2d((2 * uni(g) - 1) * f, (2 * uni(g) - 1) * fy), false});
     }
     std::shuffle(matches.begin(), matches.end(), g);
     for (const Match& m : matches) {

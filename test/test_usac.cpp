@@ -50,6 +50,21 @@ double msacCost(const cv::Matx33d& E, const SyntheticScene& s, double thresholdP
     return cost;
 }
 
+/** The points within thresholdPx (Sampson distance) of E on the scene. */
+int inlierCount(const cv::Matx33d& E, const SyntheticScene& s, double thresholdPx)
+{
+    const double t = thresholdPx / s.K(0, 0);
+    int count = 0;
+    for (size_t i = 0; i < s.x1.size(); ++i) {
+        const cv::Vec3d a(s.x1[i].x, s.x1[i].y, 1.0), b(s.x2[i].x, s.x2[i].y, 1.0);
+        const cv::Vec3d Ea = E * a, Etb = E.t() * b;
+        const double r = b.dot(Ea);
+        count +=
+            r * r <= t * t * (Ea[0] * Ea[0] + Ea[1] * Ea[1] + Etb[0] * Etb[0] + Etb[1] * Etb[1]);
+    }
+    return count;
+}
+
 /** The scene with its correct matches first (as PROSAC expects of data sorted by quality). */
 SyntheticScene inliersFirst(const SyntheticScene& s)
 {
@@ -240,8 +255,12 @@ TEST(Prosac, SortedDataNeedsFarFewerSamplesThanUniform)
         // As complete a model as uniform sampling's, judged against the truth: uniform sampling's
         // own inlier count is no reference since LO's inner samples (ransac/search_msac.cpp) made
         // it find the full model at this ratio (seed 2: 149 of 150, PROSAC 142 after 39 samples).
-        EXPECT_GE(prosac.inliers, static_cast<int>(0.9 * s.numInliers));
-        EXPECT_GE(uniform.inliers, static_cast<int>(0.9 * s.numInliers));
+        // The reference is the true E's own inlier count: the noise puts 3% to 11% of the correct
+        // matches beyond the threshold (134 / 146 / 140 of 150 for seeds 1 / 2 / 3; uniform
+        // sampling's estimate for seed 1 has 134 too, with pose errors of 0.03 / 0.5 degrees).
+        const int trueModelInliers = inlierCount(s.E, s, params.threshold);
+        EXPECT_GE(prosac.inliers, static_cast<int>(0.9 * trueModelInliers));
+        EXPECT_GE(uniform.inliers, static_cast<int>(0.9 * trueModelInliers));
     }
 }
 

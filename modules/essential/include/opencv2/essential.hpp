@@ -18,8 +18,10 @@ hypotheses come from a tiny Gauss-Newton or Levenberg-Marquardt optimiser on a m
 correspondences in a 5-DOF parameterisation (rotation by the SO(3) exponential map, translation as a
 rotated unit vector), or from a speed-tuned Nister five-point solver (the default draws from both
 in turn), are verified by Wald's SPRT and scored by MSAC on the Sampson distance, each
-new best model is polished by a few iterations of iteratively reweighted least squares (IRLS) on its
-inliers (local optimisation), and the winner is refined on all points by IRLS.
+new best model is polished by a few iterations of iteratively reweighted least squares (IRLS) on the
+points near it (local optimisation), and the winner is refined by IRLS with Tukey's biweight at a
+scale that follows the estimated noise, on the points near it and in front of both cameras
+(docs/ACCURACY.md).
 
 findEssentialMatIter() has every overload of `cv::findEssentialMat` (OpenCV 4.6) with the same
 arguments, defaults, return value and mask, and recoverPose() every overload of `cv::recoverPose`,
@@ -61,8 +63,9 @@ Differences from `cv::findEssentialMat` and `cv::recoverPose` that a caller may 
   EssentialReport of the module's own overload says so (EssentialReport::degenerate);
 - `maxIters` keeps OpenCV's meaning of a confidence budget: an iterative solver that solves only a
   fraction s of outlier-free samples may draw maxIters / s samples (see EssentialParams::maxIters);
-- the returned E is refined on all points by IRLS (set EssentialParams::refine = false in the
-  module's own overload to skip this), and the mask is that of the refined E;
+- the returned E is refined by IRLS on the points near the search winner (set
+  EssentialParams::refine = false in the module's own overload to skip this), and the mask is that
+  of the refined E;
 - LMEDS derives its threshold from the median error as OpenCV does, with OpenCV's floor of 0.001
   normalised units; a solver whose sample is as large as the point set (robust on 10 points) uses
   the finite-sample correction of one spare point instead of dividing by zero;

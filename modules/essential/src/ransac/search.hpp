@@ -34,6 +34,9 @@ struct SearchSettings
     int loIterations = 0;
     int loSampleSize = 0;
     double loScale = 0.0;
+    /** Adaptive MSAC: the local optimisation refines the points within this many thresholds of
+    the new best model. */
+    double loBand = 1.0;
     /** Adaptive MSAC and LMedS: PROSAC sampling (points sorted best first) instead of uniform. */
     bool prosac = false;
     /** Adaptive MSAC: verify hypotheses with Wald's SPRT. */

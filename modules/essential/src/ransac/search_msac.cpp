@@ -142,7 +142,7 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
             else
                 innerPending = true;
         }
-        inlierMask(result.E, problem, problem.threshold, mask.data());
+        inlierMask(result.E, problem, settings.loBand * problem.threshold, mask.data());
         chosen.clear();
         for (int i = 0; i < n; ++i)
             if (mask[i]) chosen.push_back(i);

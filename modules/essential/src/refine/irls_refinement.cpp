@@ -58,13 +58,16 @@ struct LogSum
     double total() const { return sum + std::log(product); }
 };
 
-/** The robust cost 0.5 sigma^2 sum_i log(1 + s_i^2 / sigma^2) of the pose and, when A and g are
-given, the IRLS normal equations A d = -g there: Gauss-Newton on the Sampson residuals s_i with the
-Cauchy weights w_i = 1 / (1 + s_i^2 / sigma^2) held fixed, A = sum w J J^T, g = sum w s J. One pass
-over the points computes both, so that an accepted step already has the next iteration's equations.
-Points with no Sampson distance (D = 0) take no part. */
-ESSENTIAL_AVX2_CLONES double evaluate(const Problem& p, const EssentialPose& pose, double sigma2,
-                                      Matrix5d* A, Vector5d* g)
+/** evaluate() for one loss (a compile-time choice, so that the per-point loop has no branch on
+it and stays vectorised), inlined into each AVX2 / default clone of its callers. */
+#if defined(__GNUC__)
+#define ESSENTIAL_INLINE_INTO_CLONES inline __attribute__((always_inline))
+#else
+#define ESSENTIAL_INLINE_INTO_CLONES inline
+#endif
+template <bool Tukey>
+ESSENTIAL_INLINE_INTO_CLONES double evaluateLoss(const Problem& p, const EssentialPose& pose,
+                                                 double sigma2, Matrix5d* A, Vector5d* g)
 {
     const geometry::EssentialDerivatives derivatives(pose);
     const int n = p.size();
@@ -73,15 +76,22 @@ ESSENTIAL_AVX2_CLONES double evaluate(const Problem& p, const EssentialPose& pos
     const double* x2 = p.x2.data();
     const double* y2 = p.y2.data();
     const double invSigma2 = 1.0 / sigma2;
-    LogSum logSum;
+    LogSum logSum;         // Cauchy: sum of log(1 + u)
+    double tukeySum = 0.0; // Tukey: sum of 1 - (1 - u)^3, (1 - u) clamped at 0
     const geometry::EssentialEntries E(derivatives.E);
     if (!A) {
         for (int i = 0; i < n; ++i) {
             const geometry::SampsonTerms t = geometry::sampsonTerms(E, x1[i], y1[i], x2[i], y2[i]);
             if (!(t.D > 0.0)) continue;
-            logSum.add(geometry::sampsonSquared(t) * invSigma2);
+            const double u = geometry::sampsonSquared(t) * invSigma2;
+            if (Tukey) {
+                const double v = std::max(0.0, 1.0 - u);
+                tukeySum += 1.0 - v * v * v;
+            } else {
+                logSum.add(u);
+            }
         }
-        return 0.5 * sigma2 * logSum.total();
+        return Tukey ? sigma2 / 6.0 * tukeySum : 0.5 * sigma2 * logSum.total();
     }
     // Per block of points: first the Sampson residuals, Jacobians and weights into small arrays
     // (a loop without reductions or branches, which the compiler vectorises), then the 15 distinct
@@ -114,15 +124,30 @@ ESSENTIAL_AVX2_CLONES double evaluate(const Problem& p, const EssentialPose& pos
             const double u = sv * sv * invSigma2;
             S[i] = sv;
             U[i] = t.D > 0.0 ? u : -1.0; // -1: no Sampson distance, not in the cost
-            W[i] = 1.0 / (1.0 + u);
+            if (Tukey) {
+                // max(0, 1 - u) without a comparison, so that the loop stays branch-free and
+                // vectorised (exact: d + |d| is 2d or 0, and the halving is exact).
+                const double d = 1.0 - u;
+                const double v = 0.5 * (d + std::abs(d));
+                W[i] = v * v;
+            } else {
+                W[i] = 1.0 / (1.0 + u);
+            }
         }
         for (int i = count; i < kBlock; ++i) { // pad the block to a multiple of kLanes
             S[i] = W[i] = 0.0;
             for (int m = 0; m < 5; ++m)
                 J[m][i] = 0.0;
         }
-        for (int i = 0; i < count; ++i)
-            if (U[i] >= 0.0) logSum.add(U[i]);
+        for (int i = 0; i < count; ++i) {
+            if (!(U[i] >= 0.0)) continue;
+            if (Tukey) {
+                const double v = std::max(0.0, 1.0 - U[i]);
+                tukeySum += 1.0 - v * v * v;
+            } else {
+                logSum.add(U[i]);
+            }
+        }
         const int padded = (count + kLanes - 1) / kLanes * kLanes;
         for (int i = 0; i < padded; i += kLanes) {
             for (int l = 0; l < kLanes; ++l) {
@@ -169,7 +194,31 @@ ESSENTIAL_AVX2_CLONES double evaluate(const Problem& p, const EssentialPose& pos
         a03, a13, a23, a33, a34,   //
         a04, a14, a24, a34, a44;
     *g << g0, g1, g2, g3, g4;
-    return 0.5 * sigma2 * logSum.total();
+    return Tukey ? sigma2 / 6.0 * tukeySum : 0.5 * sigma2 * logSum.total();
+}
+
+/** The robust cost of the pose (the loss of `loss` at scale sigma = sqrt(sigma2)) and, when A and g
+are given, the IRLS normal equations A d = -g there: Gauss-Newton on the Sampson residuals s_i with
+the weights w_i = rho'(s_i) / s_i held fixed, A = sum w J J^T, g = sum w s J. One pass over the
+points computes both, so that an accepted step already has the next iteration's equations. Points
+with no Sampson distance (D = 0) take no part. */
+ESSENTIAL_AVX2_CLONES double evaluateCauchy(const Problem& p, const EssentialPose& pose,
+                                            double sigma2, Matrix5d* A, Vector5d* g)
+{
+    return evaluateLoss<false>(p, pose, sigma2, A, g);
+}
+
+ESSENTIAL_AVX2_CLONES double evaluateTukey(const Problem& p, const EssentialPose& pose,
+                                           double sigma2, Matrix5d* A, Vector5d* g)
+{
+    return evaluateLoss<true>(p, pose, sigma2, A, g);
+}
+
+double evaluate(const Problem& p, const EssentialPose& pose, double sigma2, RobustLoss loss,
+                Matrix5d* A, Vector5d* g)
+{
+    return loss == RobustLoss::Tukey ? evaluateTukey(p, pose, sigma2, A, g)
+                                     : evaluateCauchy(p, pose, sigma2, A, g);
 }
 
 } // namespace
@@ -189,7 +238,7 @@ IrlsResult refineIrls(const Problem& problem, const Matx33d& E0, double scale,
     const double sigma2 = scale * scale;
     Matrix5d A, trialA;
     Vector5d g, trialG;
-    double cost = evaluate(problem, pose, sigma2, &A, &g);
+    double cost = evaluate(problem, pose, sigma2, settings.loss, &A, &g);
     const double initialCost = cost;
     double lambda = 1e-4;
     for (int it = 0; it < settings.maxIterations; ++it) {
@@ -209,7 +258,7 @@ IrlsResult refineIrls(const Problem& problem, const Matx33d& E0, double scale,
             trial.update(step);
             const bool withEquations = attempt == 0;
             const double trialCost =
-                evaluate(problem, trial, sigma2, withEquations ? &trialA : nullptr,
+                evaluate(problem, trial, sigma2, settings.loss, withEquations ? &trialA : nullptr,
                          withEquations ? &trialG : nullptr);
             if (trialCost < cost) {
                 const double decrease = (cost - trialCost) / cost;
@@ -223,7 +272,7 @@ IrlsResult refineIrls(const Problem& problem, const Matx33d& E0, double scale,
                     A = trialA;
                     g = trialG;
                 } else {
-                    evaluate(problem, pose, sigma2, &A, &g);
+                    evaluate(problem, pose, sigma2, settings.loss, &A, &g);
                 }
             } else {
                 lambda *= 10.0;

@@ -15,8 +15,18 @@ namespace cv {
 namespace essential {
 namespace refine {
 
+/** The robust loss of the refinement, with its scale c:
+ - Cauchy: rho(s) = c^2/2 log(1 + s^2/c^2), weight 1 / (1 + s^2/c^2); every point keeps some
+   pull (c^2 / s for s >> c), which keeps LM converging from a start that is off;
+ - Tukey's biweight: rho(s) = c^2/6 (1 - (1 - s^2/c^2)^3) for |s| < c, c^2/6 beyond, weight
+   (1 - s^2/c^2)^2 inside and 0 beyond: no pull at all from the points beyond c, none near it,
+   which makes the minimum exact on noise-free inliers whatever the outliers (it needs a start
+   within about c of it). */
+enum class RobustLoss { Cauchy, Tukey };
+
 struct IrlsSettings
 {
+    RobustLoss loss = RobustLoss::Cauchy;
     /** Outer (reweighting) iterations. Measured on 200 problems of the synthetic protocol (N = 500,
     50% inliers, from the MSAC winner): most refinements stop after 5 or 6 iterations and 7 of 200
     reach this cap; mean pose errors 0.032 deg (rotation) and 0.170 deg (translation direction),

@@ -105,9 +105,9 @@ struct CV_EXPORTS EssentialParams
     int maxIters = 1000;
 
     /** Local optimisation (LO) in the adaptive MSAC engine: each time a hypothesis becomes the
-    best so far, it is polished by this many IRLS iterations (the final refinement's algorithm:
-    Levenberg-Marquardt on Cauchy-weighted Sampson residuals, scale half the threshold) on its
-    inliers, and the polished model replaces it when its MSAC cost on all points is lower; the
+    best so far, it is polished by this many IRLS iterations (Levenberg-Marquardt on
+    Cauchy-weighted Sampson residuals, scale the threshold) on the points within 2 thresholds of
+    it, and the polished model replaces it when its MSAC cost on all points is lower; the
     stopping rule then uses the polished model's inlier ratio. 0 disables LO. Ignored by LMEDS and
     by ENGINE_PREEMPTIVE and ENGINE_OPENCV (they have no LO step). Must be >= 0.
     Default 5, measured (docs/ENGINE.md, "Local optimisation"): on the synthetic protocol (N = 500,
@@ -153,8 +153,10 @@ struct CV_EXPORTS EssentialParams
     /** Seed of the random generator: the same seed and input give the same result. */
     uint64 seed = 0x6573736e7469616cULL;
 
-    /** Refine the best hypothesis on all points by iteratively reweighted least squares (IRLS) with
-    Levenberg-Marquardt in the 5-DOF parameterisation, then recompute the inlier mask. */
+    /** Refine the best hypothesis by iteratively reweighted least squares (IRLS) with
+    Levenberg-Marquardt in the 5-DOF parameterisation (Tukey's biweight at a scale that follows the
+    estimated noise, on the points within max(2 thresholds, 4 sigmas) of it and in front of both
+    cameras; docs/ACCURACY.md), then recompute the inlier mask. */
     bool refine = true;
 
     /** When a report is requested: also decompose E into R and t (with the cheirality test of

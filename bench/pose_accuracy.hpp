@@ -1,0 +1,85 @@
+// This file is part of opencv_essential, licensed under the Apache License, Version 2.0.
+// See the LICENSE file at the top of the source tree.
+
+// Pose accuracy figures shared by the comparison programs: the error of an estimate (the larger of
+// the rotation error and the translation direction error, in degrees, as in the pose-estimation
+// benchmarks) and its AUC (test/pose_auc.hpp), the reliability counts, and the thread CPU clock
+// the timings use.
+
+#ifndef OPENCV_ESSENTIAL_BENCH_POSE_ACCURACY_HPP
+#define OPENCV_ESSENTIAL_BENCH_POSE_ACCURACY_HPP
+
+#include "bench_common.hpp"
+#include "pose_auc.hpp"
+
+#include <algorithm>
+#include <ctime>
+#include <string>
+#include <vector>
+
+namespace essential_bench {
+
+/** Thread CPU time in milliseconds (CLOCK_THREAD_CPUTIME_ID): on a shared machine the time the
+thread waits for a core is not charged to it. */
+inline double threadCpuMs()
+{
+    timespec ts;
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return ts.tv_sec * 1e3 + ts.tv_nsec * 1e-6;
+}
+
+/** One estimate: rotation and translation direction errors in degrees (180 for a failure) and
+its thread CPU time. */
+struct PoseOutcome
+{
+    double rotErr = 180.0, transErr = 180.0;
+    double ms = 0.0;
+
+    double error() const { return std::max(rotErr, transErr); }
+};
+
+using essential_test::poseAuc;
+
+/** Summary of a method over a set of problems. */
+struct AccuracySummary
+{
+    double auc1 = 0, auc5 = 0, auc10 = 0;
+    double reliableStrict = 0; //!< rotation < 1 deg and translation < 3 deg
+    double reliableLoose = 0;  //!< rotation < 2 deg and translation < 5 deg
+    double medianError = 0;    //!< median of max(rotation, translation) error, degrees
+    double medianRot = 0, medianTrans = 0;
+    double medianMs = 0, meanMs = 0;
+};
+
+inline AccuracySummary summarise(const std::vector<PoseOutcome>& outcomes)
+{
+    AccuracySummary s;
+    if (outcomes.empty()) return s;
+    std::vector<double> err, rot, trans, ms;
+    int strict = 0, loose = 0;
+    for (const PoseOutcome& o : outcomes) {
+        err.push_back(o.error());
+        rot.push_back(o.rotErr);
+        trans.push_back(o.transErr);
+        ms.push_back(o.ms);
+        s.meanMs += o.ms;
+        strict += o.rotErr < 1 && o.transErr < 3;
+        loose += o.rotErr < 2 && o.transErr < 5;
+    }
+    const double n = static_cast<double>(outcomes.size());
+    s.auc1 = poseAuc(err, 1.0);
+    s.auc5 = poseAuc(err, 5.0);
+    s.auc10 = poseAuc(err, 10.0);
+    s.reliableStrict = strict / n;
+    s.reliableLoose = loose / n;
+    s.medianError = median(err);
+    s.medianRot = median(rot);
+    s.medianTrans = median(trans);
+    s.medianMs = median(ms);
+    s.meanMs /= n;
+    return s;
+}
+
+} // namespace essential_bench
+
+#endif

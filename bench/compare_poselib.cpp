@@ -9,14 +9,9 @@
 //                             [--max-iters 1000] [--poselib-max-iters 10000]
 //                             [--camera paper|wide] [--threshold PX] [--seed 1] [--csv FILE]
 //
-// Per problem the two methods run in a random order (so that a shared machine's load falls on
-// both alike), each timed by the thread's CPU clock:
-//  - ours: cv::essential::findEssentialMatIter(points, K, RANSAC, 0.999, threshold, maxIters, mask)
-//    then cv::essential::recoverPose(E, points, K, R, t, mask) (the drop-in pair, pixels in);
-//  - PoseLib: poselib::estimate_relative_pose on the same pixels with a pinhole camera, RANSAC
-//    min_iterations 0, max_iterations --poselib-max-iters, max_error = threshold (px), all else
-//    PoseLib's defaults (success probability 0.9999, 3x the dynamic trial count, LO by 25 LM
-//    iterations with a truncated loss, final LM with a Cauchy loss on the inliers).
+// Per problem the two methods (bench/poselib_runner.hpp: the drop-in pair, and PoseLib with
+// min_iterations 0 and the given cap) run in a random order, so that the machine's load falls on
+// both alike, each timed by the thread's CPU clock.
 // Error of an estimate: max(rotation error, translation direction error) in degrees (180 for a
 // failure); AUC@1/5/10 degrees of it; reliable: rotation < 2 and translation < 5 degrees (in the
 // 1/3 column: < 1 and < 3).
@@ -25,11 +20,7 @@
 
 #include "bench_common.hpp"
 #include "pose_accuracy.hpp"
-
-#include <PoseLib/poselib.h>
-
-#include <opencv2/calib3d.hpp>
-#include <opencv2/essential.hpp>
+#include "poselib_runner.hpp"
 
 #include <cstdio>
 #include <cstdlib>
@@ -90,58 +81,6 @@ Args parse(int argc, char** argv)
     return a;
 }
 
-PoseOutcome runOurs(const essential_test::SyntheticScene& s, const Args& args)
-{
-    PoseOutcome o;
-    const cv::Mat K(s.K);
-    const double t0 = threadCpuMs();
-    cv::Mat mask, R, t;
-    const cv::Mat E = cv::essential::findEssentialMatIter(s.px1, s.px2, K, cv::RANSAC, 0.999,
-                                                          args.threshold, args.maxIters, mask);
-    int inFront = 0;
-    if (E.rows == 3 && E.cols == 3)
-        inFront = cv::essential::recoverPose(E, s.px1, s.px2, K, R, t, mask);
-    o.ms = threadCpuMs() - t0;
-    if (inFront > 0) {
-        o.rotErr = essential_test::rotationErrorDeg(cv::Matx33d(R), s.R);
-        o.transErr = essential_test::translationErrorDeg(cv::Vec3d(t), s.t);
-    }
-    return o;
-}
-
-PoseOutcome runPoseLib(const essential_test::SyntheticScene& s, const Args& args)
-{
-    PoseOutcome o;
-    const double t0 = threadCpuMs();
-    std::vector<Eigen::Vector2d> a(s.px1.size()), b(s.px2.size());
-    for (size_t i = 0; i < a.size(); ++i) {
-        a[i] = Eigen::Vector2d(s.px1[i].x, s.px1[i].y);
-        b[i] = Eigen::Vector2d(s.px2[i].x, s.px2[i].y);
-    }
-    const std::vector<double> params = {s.K(0, 0), s.K(1, 1), s.K(0, 2), s.K(1, 2)};
-    const poselib::Camera camera("PINHOLE", params);
-    poselib::RelativePoseOptions opt;
-    opt.ransac.min_iterations = 0;
-    opt.ransac.max_iterations = static_cast<size_t>(args.poselibMaxIters);
-    opt.max_error = args.threshold;
-    poselib::CameraPose pose;
-    std::vector<char> inliers;
-    const poselib::RansacStats stats =
-        poselib::estimate_relative_pose(a, b, camera, camera, opt, &pose, &inliers);
-    o.ms = threadCpuMs() - t0;
-    if (stats.num_inliers >= 5) {
-        const Eigen::Matrix3d R = pose.R();
-        cv::Matx33d Rm;
-        for (int i = 0; i < 3; ++i)
-            for (int j = 0; j < 3; ++j)
-                Rm(i, j) = R(i, j);
-        o.rotErr = essential_test::rotationErrorDeg(Rm, s.R);
-        o.transErr =
-            essential_test::translationErrorDeg(cv::Vec3d(pose.t.x(), pose.t.y(), pose.t.z()), s.t);
-    }
-    return o;
-}
-
 } // namespace
 
 int main(int argc, char** argv)
@@ -170,14 +109,15 @@ int main(int argc, char** argv)
             cfg.numPoints = args.n;
             cfg.inlierRatio = ratio;
             const auto s = essential_test::makeScene(cfg, args.seed * 1000003ULL + p);
-            PoseOutcome a, b;
+            PoseEstimate ea, eb;
             if (order() & 1) {
-                a = runOurs(s, args);
-                b = runPoseLib(s, args);
+                ea = runOurs(s.px1, s.px2, s.K, args.threshold, args.maxIters);
+                eb = runPoseLib(s.px1, s.px2, s.K, args.threshold, args.poselibMaxIters);
             } else {
-                b = runPoseLib(s, args);
-                a = runOurs(s, args);
+                eb = runPoseLib(s.px1, s.px2, s.K, args.threshold, args.poselibMaxIters);
+                ea = runOurs(s.px1, s.px2, s.K, args.threshold, args.maxIters);
             }
+            const PoseOutcome a = outcomeOf(ea, s.R, s.t), b = outcomeOf(eb, s.R, s.t);
             ours.push_back(a);
             theirs.push_back(b);
             if (csv.is_open()) {

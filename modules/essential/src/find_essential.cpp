@@ -127,10 +127,10 @@ Mat solveExactlyFive(const Problem& problem, EssentialSolver& solver, RNG& rng,
 within kLoBand thresholds of the model with a Cauchy scale of kLoScaleFraction thresholds, as the
 final refinement does when the noise is half the threshold (refine/final_refinement.hpp): the
 points within one threshold of a model that is off are biased towards it. Measured with
-bench/essential_accuracy_candidates (400 problems, N = 500; docs/ACCURACY.md): against 1 threshold
-and half of it, the search draws 22 / 420 samples instead of 24 / 464 at 90 / 50% inliers and
-takes 0.17 / 2.04 ms instead of 0.19 / 2.22 ms, and the final estimate is as precise (AUC@1
-0.944 / 0.916 against 0.944 / 0.918). */
+bench/essential_accuracy_candidates (N = 500; docs/ACCURACY.md): against 1 threshold and half of
+it, the search draws 22 / 420 samples instead of 24 / 464 at 90 / 50% inliers and takes 0.17 / 2.04
+ms instead of 0.19 / 2.22 ms (400 problems), and the final estimate is as precise (AUC@1 0.944 /
+0.917 against 0.944 / 0.918, 300 problems). */
 constexpr double kLoBand = 2.0;
 constexpr double kLoScaleFraction = 1.0;
 

@@ -19,8 +19,8 @@ Vec4d triangulateDlt(const Matx33d& R, const Vec3d& t, const Point2d& q1, const 
 {
     // Rows of P = [I | 0] and P' = [R | t].
     Eigen::Matrix4d A;
-    A << -1.0, 0.0, q1.x, 0.0, //
-        0.0, -1.0, q1.y, 0.0;  //
+    A.row(0) << -1.0, 0.0, q1.x, 0.0;
+    A.row(1) << 0.0, -1.0, q1.y, 0.0;
     for (int k = 0; k < 4; ++k) {
         const double p1 = k < 3 ? R(0, k) : t[0];
         const double p2 = k < 3 ? R(1, k) : t[1];

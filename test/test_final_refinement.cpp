@@ -7,6 +7,7 @@
 
 #include "problem.hpp"
 #include "refine/final_refinement.hpp"
+#include "refinement_fixtures.hpp"
 #include "synthetic_scene.hpp"
 
 #include <opencv2/essential.hpp>
@@ -19,34 +20,10 @@ namespace {
 
 using essential_test::essentialDistance;
 using essential_test::makeScene;
+using essential_test::perturbed;
+using essential_test::problemOf;
 using essential_test::SceneConfig;
 using essential_test::SyntheticScene;
-
-cv::essential::Problem problemOf(const SyntheticScene& s, double threshold,
-                                 bool inliersOnly = false)
-{
-    std::vector<cv::Point2d> a, b;
-    for (size_t i = 0; i < s.x1.size(); ++i)
-        if (!inliersOnly || s.inlier[i]) {
-            a.push_back(s.x1[i]);
-            b.push_back(s.x2[i]);
-        }
-    return cv::essential::makeProblem(a, b, threshold);
-}
-
-/** The true pose moved by a rotation of `rotDeg` about a random axis and a translation direction
-`transDeg` off, as E = [t']x R'. */
-cv::Matx33d perturbed(const SyntheticScene& s, double rotDeg, double transDeg, uint64_t seed)
-{
-    std::mt19937_64 g(seed * 7919 + 13);
-    const cv::Matx33d dR =
-        essential_test::axisAngle(essential_test::randomUnit(g), rotDeg * CV_PI / 180.0);
-    cv::Vec3d side = s.t.cross(essential_test::randomUnit(g));
-    side /= cv::norm(side);
-    const double a = transDeg * CV_PI / 180.0;
-    const cv::Vec3d t = std::cos(a) * s.t + std::sin(a) * side;
-    return essential_test::skewMatrix(t) * (dR * s.R);
-}
 
 TEST(FinalRefinement, EstimatesTheNoiseOfTheInliers)
 {

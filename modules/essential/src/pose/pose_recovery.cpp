@@ -46,22 +46,29 @@ inline bool inFront(const Eigen::Matrix3d& R, const Eigen::Vector3d& t, const Po
 
 } // namespace
 
-bool recoverPoseNormalised(const Matx33d& E, const Point2d* x1, const Point2d* x2, int n,
-                           const uchar* maskIn, uchar* maskOut, PoseResult& out)
+bool poseCandidates(const Matx33d& E, Eigen::Matrix3d& R1, Eigen::Matrix3d& R2, Eigen::Vector3d& t)
 {
     Eigen::Matrix3d Ee;
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j)
             Ee(i, j) = E(i, j);
+    if (!geometry::decomposeEssential(Ee, R1, R2, t) || !t.allFinite() || !(t.norm() > 0.0))
+        return false;
+    t.normalize();
+    return true;
+}
+
+bool recoverPoseNormalised(const Matx33d& E, const Point2d* x1, const Point2d* x2, int n,
+                           const uchar* maskIn, uchar* maskOut, PoseResult& out)
+{
     Eigen::Matrix3d R1, R2;
     Eigen::Vector3d t;
-    if (!geometry::decomposeEssential(Ee, R1, R2, t) || !t.allFinite() || !(t.norm() > 0.0)) {
+    if (!poseCandidates(E, R1, R2, t)) {
         if (maskOut)
             for (int i = 0; i < n; ++i)
                 maskOut[i] = 0;
         return false;
     }
-    t.normalize();
 
     // The candidates in the order cv::recoverPose tries them; ties go to the first, as there.
     const Eigen::Matrix3d* rotations[4] = {&R1, &R2, &R1, &R2};

@@ -9,6 +9,8 @@
 
 #include <opencv2/core.hpp>
 
+#include <Eigen/Core>
+
 namespace cv {
 namespace essential {
 namespace pose {
@@ -19,6 +21,11 @@ struct PoseResult
     Vec3d t = Vec3d(0, 0, 0);
     int inFront = 0; //!< points (among those masked in) with positive depth in both views
 };
+
+/** The two rotations and the unit translation of E (its four pose candidates are (R1 or R2, +-t)),
+the start of both pose recoveries; false when E has no such decomposition (zero, non-finite, or a
+translation that is not finite and non-zero). */
+bool poseCandidates(const Matx33d& E, Eigen::Matrix3d& R1, Eigen::Matrix3d& R2, Eigen::Vector3d& t);
 
 /** Chooses among the four poses of E the one with the most points in front of both cameras.
 

@@ -3,7 +3,6 @@
 
 #include "pose/pose_recovery_dlt.hpp"
 
-#include "geometry/essential_decomposition.hpp"
 
 #include <Eigen/Core>
 #include <Eigen/SVD>
@@ -53,17 +52,12 @@ bool recoverPoseDistanceThresh(const Matx33d& E, const Point2d* x1, const Point2
                                const uchar* maskIn, double distanceThresh, uchar* maskOut,
                                Vec4d* triangulated, PoseResult& out)
 {
-    Eigen::Matrix3d Ee;
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j)
-            Ee(i, j) = E(i, j);
     Eigen::Matrix3d R1e, R2e;
     Eigen::Vector3d te;
-    if (!geometry::decomposeEssential(Ee, R1e, R2e, te) || !te.allFinite() || !(te.norm() > 0.0)) {
+    if (!poseCandidates(E, R1e, R2e, te)) {
         if (maskOut) std::fill(maskOut, maskOut + n, uchar(0));
         return false;
     }
-    te.normalize();
     Matx33d R1, R2;
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) {

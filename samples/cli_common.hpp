@@ -171,6 +171,61 @@ inline std::vector<std::vector<double>> readNumberRows(std::istream& in,
     return rows;
 }
 
+/** "uniform", "prosac", "napsac" or "pnapsac" as the cv::SamplingMethod the module takes in
+EssentialParams::sampler; false (value unchanged) for anything else. */
+inline bool parseSampler(const std::string& name, int& sampler)
+{
+    if (name == "uniform")
+        sampler = cv::SAMPLING_UNIFORM;
+    else if (name == "prosac")
+        sampler = cv::SAMPLING_PROSAC;
+    else if (name == "napsac")
+        sampler = cv::SAMPLING_NAPSAC;
+    else if (name == "pnapsac")
+        sampler = cv::SAMPLING_PROGRESSIVE_NAPSAC;
+    else
+        return false;
+    return true;
+}
+
+/** The name parseSampler() reads for a sampler. */
+inline const char* samplerName(int sampler)
+{
+    switch (sampler) {
+    case cv::SAMPLING_PROSAC:
+        return "prosac";
+    case cv::SAMPLING_NAPSAC:
+        return "napsac";
+    case cv::SAMPLING_PROGRESSIVE_NAPSAC:
+        return "pnapsac";
+    default:
+        return "uniform";
+    }
+}
+
+/** Indices of the matches sorted by descriptor distance, best (smallest) first, ties in input
+order: the order PROSAC needs. */
+inline std::vector<int> orderByDistance(const std::vector<float>& distances)
+{
+    std::vector<int> order(distances.size());
+    for (size_t i = 0; i < order.size(); ++i)
+        order[i] = static_cast<int>(i);
+    std::stable_sort(order.begin(), order.end(),
+                     [&](int a, int b) { return distances[a] < distances[b]; });
+    return order;
+}
+
+/** `values` taken in `order`. */
+template <typename T>
+std::vector<T> permuted(const std::vector<T>& values, const std::vector<int>& order)
+{
+    std::vector<T> out;
+    out.reserve(order.size());
+    for (int i : order)
+        out.push_back(values[static_cast<size_t>(i)]);
+    return out;
+}
+
 /** Angle in degrees of the rotation Ra^T Rb. */
 inline double rotationAngleDeg(const cv::Matx33d& Ra, const cv::Matx33d& Rb)
 {

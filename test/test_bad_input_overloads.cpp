@@ -661,7 +661,12 @@ TEST(BadInputTable, UnknownSolverEngineSamplerOrOption)
         {[](ess::EssentialParams& p) { p.engine = 7; }, "engine"},
         {[](ess::EssentialParams& p) { p.engine = -1; }, "engine"},
         {[](ess::EssentialParams& p) { p.sampler = 99; }, "sampler"},
-        {[](ess::EssentialParams& p) { p.sampler = cv::SAMPLING_NAPSAC; }, "SAMPLING_NAPSAC"},
+        {[](ess::EssentialParams& p) {
+             p.sampler = cv::SAMPLING_NAPSAC;
+             p.method = cv::LMEDS;
+         },
+         "SAMPLING_NAPSAC"},
+        {[](ess::EssentialParams& p) { p.sampleBudget = 2; }, "sampleBudget"},
         {[](ess::EssentialParams& p) { p.loIterations = -1; }, "loIterations"},
         {[](ess::EssentialParams& p) { p.loSampleSize = 3; }, "loSampleSize"},
         {[](ess::EssentialParams& p) { p.preemptiveBlockSize = 0; }, "preemptiveBlockSize"},
@@ -689,7 +694,11 @@ TEST(BadInputTable, UnknownSolverEngineSamplerOrOption)
     const std::vector<UsacOption> usacOptions = {
         {[](cv::UsacParams& u) { u.score = static_cast<cv::ScoreMethod>(99); }, "score"},
         {[](cv::UsacParams& u) { u.sampler = static_cast<cv::SamplingMethod>(99); }, "sampler"},
-        {[](cv::UsacParams& u) { u.sampler = cv::SAMPLING_PROGRESSIVE_NAPSAC; }, "sampler"},
+        {[](cv::UsacParams& u) {
+             u.sampler = cv::SAMPLING_PROGRESSIVE_NAPSAC;
+             u.score = cv::SCORE_METHOD_LMEDS;
+         },
+         "sampler"},
         {[](cv::UsacParams& u) { u.loMethod = static_cast<cv::LocalOptimMethod>(99); }, "loMethod"},
         {[](cv::UsacParams& u) { u.loIterations = -2; }, "loIterations"},
         {[](cv::UsacParams& u) { u.loSampleSize = 4; }, "loSampleSize"},

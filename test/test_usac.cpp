@@ -120,6 +120,7 @@ TEST(LocalOptimisation, PolishedModelIsAtLeastAsGoodAndReliabilityHolds)
         params.refine = false; // compare the search's winners themselves
         params.confidence = 1.0 - 1e-12;
         params.maxIters = 300;
+        params.sampleBudget = cv::essential::BUDGET_CONFIDENCE; // so that the cap binds
         cv::essential::EssentialReport a, b;
         cv::Mat mask;
         params.loIterations = 0;
@@ -492,7 +493,9 @@ TEST_F(UsacParamsTest, UnsupportedAndInvalidOptionsRaise)
 {
     cv::Mat mask;
     cv::UsacParams p = usac;
+    // NAPSAC samples are local to a RANSAC-type score; LMedS has no such loop here.
     p.sampler = cv::SAMPLING_NAPSAC;
+    p.score = cv::SCORE_METHOD_LMEDS;
     expectError([&] { runUsac(p, mask); }, cv::Error::StsNotImplemented, "SAMPLING_NAPSAC");
     p.sampler = cv::SAMPLING_PROGRESSIVE_NAPSAC;
     expectError([&] { runUsac(p, mask); }, cv::Error::StsNotImplemented,
@@ -512,7 +515,9 @@ TEST_F(UsacParamsTest, UnsupportedAndInvalidOptionsRaise)
         cv::essential::findEssentialMatIter(s.px1, s.px2, cv::Mat(s.K), e, mask);
     };
     e.sampler = cv::SAMPLING_NAPSAC;
+    e.engine = cv::essential::ENGINE_PREEMPTIVE;
     expectError(runParams, cv::Error::StsNotImplemented, "SAMPLING_NAPSAC");
+    e = cv::essential::EssentialParams();
     e.sampler = 99;
     expectError(runParams, cv::Error::StsBadArg, "sampler");
     e = cv::essential::EssentialParams();

@@ -15,6 +15,8 @@
 #include "pose/pose_recovery.hpp"
 #include "problem.hpp"
 #include "ransac/msac_score.hpp"
+#include "ransac/opencv_time_budget.hpp"
+#include "ransac/plane_parallax.hpp"
 #include "ransac/search.hpp"
 #include "ransac/support_test.hpp"
 #include "refine/final_refinement.hpp"
@@ -238,7 +240,12 @@ Mat estimate(const Problem& problem, const EssentialParams& params, OutputArray 
     settings.loScale = problem.threshold * kLoScaleFraction;
     settings.loBand = kLoBand;
     settings.prosac = params.sampler == SAMPLING_PROSAC;
+    settings.napsacEvery = params.sampler == SAMPLING_NAPSAC               ? 1
+                           : params.sampler == SAMPLING_PROGRESSIVE_NAPSAC ? 2
+                                                                           : 0;
     settings.sprt = params.sprt; // used by the adaptive MSAC loop only
+    if (params.sampleBudget == BUDGET_OPENCV_TIME)
+        settings.minSampleCap = ransac::opencvTimeSamples(params.maxIters, n);
     if (hasTimeBudget(params))
         settings.deadline =
             ransac::Deadline::after(params.timeBudgetMs - msSince(start) - finishingReserveMs(n));
@@ -259,6 +266,17 @@ Mat estimate(const Problem& problem, const EssentialParams& params, OutputArray 
     rep.localOptimisations = found.localOptimisations;
     rep.localOptimisationsKept = found.localOptimisationsKept;
     rep.sprtRejections = found.sprtRejections;
+    if (found.found && params.planeParallax && params.engine == ENGINE_ADAPTIVE &&
+        params.method == RANSAC) {
+        const ransac::Score before = ransac::scoreMsac(found.E, problem);
+        const ransac::PlaneParallaxResult checked =
+            ransac::checkPlaneAndParallax(problem, found.E, before, params.confidence, rng);
+        if (checked.improved) {
+            found.E = checked.E;
+            found.inliers = checked.score.inliers;
+            rep.planeParallaxKept = true;
+        }
+    }
     rep.timeSearchMs = msSince(tSearch);
     if (!found.found) {
         writeMask(mask, inliers, maskWriting);
@@ -410,16 +428,10 @@ EssentialParams usacParams(const UsacParams& usac)
     switch (sampler) {
     case SAMPLING_UNIFORM:
     case SAMPLING_PROSAC:
+    case SAMPLING_NAPSAC:
+    case SAMPLING_PROGRESSIVE_NAPSAC:
         p.sampler = sampler;
         break;
-    case SAMPLING_NAPSAC:
-        CV_Error(Error::StsNotImplemented,
-                 "UsacParams::sampler SAMPLING_NAPSAC is not supported: use SAMPLING_UNIFORM or "
-                 "SAMPLING_PROSAC");
-    case SAMPLING_PROGRESSIVE_NAPSAC:
-        CV_Error(Error::StsNotImplemented,
-                 "UsacParams::sampler SAMPLING_PROGRESSIVE_NAPSAC is not supported: use "
-                 "SAMPLING_UNIFORM or SAMPLING_PROSAC");
     default:
         CV_Error(Error::StsBadArg,
                  "UsacParams::sampler " + std::to_string(sampler) + " is not a SamplingMethod");
@@ -448,6 +460,13 @@ EssentialParams usacParams(const UsacParams& usac)
     }
     // isParallel and neighborsSearch are ignored (see essential.hpp).
     checkConfidence(usac.confidence);
+    if ((p.sampler == SAMPLING_NAPSAC || p.sampler == SAMPLING_PROGRESSIVE_NAPSAC) &&
+        p.method == LMEDS)
+        CV_Error(Error::StsNotImplemented,
+                 "UsacParams::sampler " +
+                     std::string(p.sampler == SAMPLING_NAPSAC ? "SAMPLING_NAPSAC"
+                                                              : "SAMPLING_PROGRESSIVE_NAPSAC") +
+                     " needs a RANSAC-type score, not SCORE_METHOD_LMEDS");
     if (p.method != LMEDS) checkThreshold(usac.threshold);
     checkMaxIters(usac.maxIterations);
     p.confidence = usac.confidence;
@@ -619,19 +638,27 @@ Mat findEssentialMatIter(InputArray points1, InputArray points2, InputArray came
         CV_Error(Error::StsBadArg,
                  "EssentialParams::loSampleSize must be 0 (all inliers) or >= 5, got " +
                      std::to_string(params.loSampleSize));
-    if (params.sampler == SAMPLING_NAPSAC || params.sampler == SAMPLING_PROGRESSIVE_NAPSAC)
+    if (params.sampler != SAMPLING_UNIFORM && params.sampler != SAMPLING_PROSAC &&
+        params.sampler != SAMPLING_NAPSAC && params.sampler != SAMPLING_PROGRESSIVE_NAPSAC)
+        CV_Error(Error::StsBadArg, "EssentialParams::sampler must be SAMPLING_UNIFORM, "
+                                   "SAMPLING_PROSAC, SAMPLING_NAPSAC or "
+                                   "SAMPLING_PROGRESSIVE_NAPSAC, got " +
+                                       std::to_string(params.sampler));
+    if (params.sampler == SAMPLING_PROSAC && params.engine != ENGINE_ADAPTIVE)
+        CV_Error(Error::StsNotImplemented,
+                 "EssentialParams::sampler SAMPLING_PROSAC needs ENGINE_ADAPTIVE");
+    if ((params.sampler == SAMPLING_NAPSAC || params.sampler == SAMPLING_PROGRESSIVE_NAPSAC) &&
+        (params.engine != ENGINE_ADAPTIVE || params.method != RANSAC))
         CV_Error(Error::StsNotImplemented,
                  std::string("EssentialParams::sampler ") +
                      (params.sampler == SAMPLING_NAPSAC ? "SAMPLING_NAPSAC"
                                                         : "SAMPLING_PROGRESSIVE_NAPSAC") +
-                     " is not supported: use SAMPLING_UNIFORM or SAMPLING_PROSAC");
-    if (params.sampler != SAMPLING_UNIFORM && params.sampler != SAMPLING_PROSAC)
+                     " needs ENGINE_ADAPTIVE with method RANSAC");
+    if (params.sampleBudget != BUDGET_CONFIDENCE && params.sampleBudget != BUDGET_OPENCV_TIME)
         CV_Error(Error::StsBadArg,
-                 "EssentialParams::sampler must be SAMPLING_UNIFORM or SAMPLING_PROSAC, got " +
-                     std::to_string(params.sampler));
-    if (params.sampler == SAMPLING_PROSAC && params.engine != ENGINE_ADAPTIVE)
-        CV_Error(Error::StsNotImplemented,
-                 "EssentialParams::sampler SAMPLING_PROSAC needs ENGINE_ADAPTIVE");
+                 "EssentialParams::sampleBudget must be BUDGET_CONFIDENCE or BUDGET_OPENCV_TIME, "
+                 "got " +
+                     std::to_string(params.sampleBudget));
     const int distance = rawEnum(params.distance);
     if (distance != DISTANCE_SAMPSON && distance != DISTANCE_SYMMETRIC_EPIPOLAR)
         CV_Error(Error::StsBadArg, "EssentialParams::distance must be DISTANCE_SAMPSON or "

@@ -25,7 +25,12 @@ void writeMask(OutputArray mask, const std::vector<uchar>& values, MaskWriting h
     const Mat source(n, 1, CV_8U, const_cast<uchar*>(values.data()));
     try {
         if (how == MaskWriting::Usac) {
-            source.copyTo(mask);
+            // As OpenCV's USAC: a fresh N x 1 array copied into the output, which reallocates a
+            // mask of another shape (the allocator may hand back the same block, as it does for
+            // OpenCV; copying from an owned array keeps that pattern the same as OpenCV's).
+            Mat fresh(n, 1, CV_8U);
+            source.copyTo(fresh);
+            fresh.copyTo(mask);
             return;
         }
         mask.create(n, 1, CV_8U, -1, /*allowTransposed*/ true);

@@ -6,6 +6,7 @@
 
 #include "opencv2/essential/solver.hpp"
 #include "problem.hpp"
+#include "ransac/napsac_sampler.hpp"
 #include "ransac/prosac_sampler.hpp"
 #include "ransac/uniform_sampler.hpp"
 
@@ -26,6 +27,12 @@ struct SampleBuffer
     /** When set, samples come from this PROSAC sampler (points sorted best first) instead of being
     uniform. Not owned. */
     ProsacSampler* prosac = nullptr;
+    /** When set, every `localEvery`-th sample (1: all) is a spatially local one from this sampler,
+    the others uniform or PROSAC's; a seed without enough neighbours falls back to those. Not
+    owned. */
+    NapsacSampler* napsac = nullptr;
+    int localEvery = 1;
+    int drawn = 0;
 
     explicit SampleBuffer(const EssentialSolver& solver)
         : sampleSize(solver.sampleSize()), indices(static_cast<size_t>(sampleSize)),
@@ -40,10 +47,14 @@ struct SampleBuffer
     solved. */
     int drawAndSolve(const Problem& problem, EssentialSolver& solver, RNG& rng)
     {
-        if (prosac)
-            prosac->draw(rng, indices.data());
-        else
-            drawUniformSample(rng, problem.size(), sampleSize, indices.data());
+        const bool local =
+            napsac && (drawn++ % localEvery) == 0 && napsac->draw(rng, indices.data());
+        if (!local) {
+            if (prosac)
+                prosac->draw(rng, indices.data());
+            else
+                drawUniformSample(rng, problem.size(), sampleSize, indices.data());
+        }
         for (int i = 0; i < sampleSize; ++i) {
             x1[i] = problem.p1[indices[i]];
             x2[i] = problem.p2[indices[i]];

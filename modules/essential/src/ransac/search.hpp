@@ -39,8 +39,16 @@ struct SearchSettings
     double loBand = 1.0;
     /** Adaptive MSAC and LMedS: PROSAC sampling (points sorted best first) instead of uniform. */
     bool prosac = false;
+    /** Adaptive MSAC: every napsacEvery-th sample is spatially local (ransac/napsac_sampler.hpp);
+    0: none, 1: all (NAPSAC), 2: every other one (the progressive mix of local and global samples).
+    */
+    int napsacEvery = 0;
     /** Adaptive MSAC: verify hypotheses with Wald's SPRT. */
     bool sprt = false;
+    /** Adaptive MSAC: the sample cap is at least this many samples (0: sampleCap() alone), the
+    budget of EssentialParams::sampleBudget = BUDGET_OPENCV_TIME (ransac/opencv_time_budget.hpp).
+    */
+    int minSampleCap = 0;
 };
 
 struct SearchResult

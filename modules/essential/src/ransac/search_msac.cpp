@@ -61,7 +61,7 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
     if (n < buffer.sampleSize) return result;
     // The sample cap: from the solver's rate at any pose until there is a model, then from its
     // rate at the model's pose (EssentialSolver::hitProbabilityAt).
-    int cap = sampleCap(settings.maxIters, solver.successRate());
+    int cap = std::max(sampleCap(settings.maxIters, solver.successRate()), settings.minSampleCap);
 
     // PROSAC: the samples follow the growth schedule with T_N = the sample cap, so that the pool
     // covers every point by the time the cap is reached.
@@ -71,6 +71,12 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
         prosac.reset(new ProsacSampler(n, buffer.sampleSize, cap));
         prosacStop.reset(new ProsacTermination(n, buffer.sampleSize));
         buffer.prosac = prosac.get();
+    }
+    std::unique_ptr<NapsacSampler> napsac;
+    if (settings.napsacEvery > 0) {
+        napsac.reset(new NapsacSampler(problem.p1.data(), problem.p2.data(), n, buffer.sampleSize));
+        buffer.napsac = napsac.get();
+        buffer.localEvery = settings.napsacEvery;
     }
     // SPRT checks the points in a random order (the data may be sorted, by PROSAC's quality or by
     // anything else): it scores a shuffled copy. Samples and local optimisation use `problem`.
@@ -185,7 +191,8 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
                              : requiredIterations(settings.confidence, p, cap);
     };
     auto samplesNeeded = [&]() {
-        cap = sampleCap(settings.maxIters, solver.hitProbabilityAt(1.0, result.E));
+        cap = std::max(sampleCap(settings.maxIters, solver.hitProbabilityAt(1.0, result.E)),
+                       settings.minSampleCap);
         int need = stopRule(double(best.inliers) / n);
         if (!prosac || prosac->isUniform()) return need;
         inlierMask(result.E, problem, problem.threshold, mask.data());

@@ -42,6 +42,21 @@ enum EssentialDistance {
     DISTANCE_SYMMETRIC_EPIPOLAR = 1
 };
 
+/** How many samples the adaptive engine may draw when its stopping rule is not met (hard data: few
+inliers, or the best model so far is wrong). */
+enum EssentialSampleBudget {
+    /** maxIters / s samples, s the solver's hit rate (EssentialParams::maxIters): the confidence
+    OpenCV's cap gives a direct solver. */
+    BUDGET_CONFIDENCE = 0,
+    /** At least as many samples as fit in three quarters of the time cv::findEssentialMat's RANSAC
+    spends on maxIters iterations with the same number of points, by a fixed cost model of both
+    (about 19 maxIters samples at N = 500, 24 maxIters at N = 4000;
+    src/ransac/opencv_time_budget.hpp has the measurements). The result stays deterministic: the
+    cap is a number of samples, not a clock. Data on which the stopping rule is met (most of them)
+    stop as early as with BUDGET_CONFIDENCE. */
+    BUDGET_OPENCV_TIME = 1
+};
+
 /** True when this build can run solvers inside OpenCV's own RANSAC loop (ENGINE_OPENCV). */
 CV_EXPORTS bool isOpenCvLoopAvailable();
 
@@ -103,6 +118,22 @@ struct CV_EXPORTS EssentialParams
     that the confidence reached at the cap is the same.
     Those samples are still several times cheaper than OpenCV's (see docs/SOLVERS.md). */
     int maxIters = 1000;
+
+    /** The sample cap of ENGINE_ADAPTIVE with method RANSAC: BUDGET_OPENCV_TIME (default) or
+    BUDGET_CONFIDENCE (EssentialSampleBudget). LMEDS draws OpenCV's fixed number of samples, and
+    ENGINE_PREEMPTIVE and ENGINE_OPENCV have their own budgets; they ignore it. Default
+    BUDGET_OPENCV_TIME, measured on hard sets (few inliers, a dominant plane, repeated structure,
+    docs/HARD_PAIRS.md). */
+    int sampleBudget = BUDGET_OPENCV_TIME;
+
+    /** After the search (ENGINE_ADAPTIVE with RANSAC), check whether the winner's inliers are
+    dominated by one plane (a homography fitted to them explains at least half) and, if so, search
+    the "plane and parallax" models E = [e']x H, the epipole e' fixed by pairs of points off the
+    plane, keeping one if its MSAC cost is lower. Planar scenes are where a search stops on a model
+    the plane alone supports (the twin of the homography decomposition or a model degrees off); the
+    check costs nothing when no plane dominates and about 1 ms otherwise. Default on, measured on
+    hard sets (docs/HARD_PAIRS.md). */
+    bool planeParallax = true;
 
     /** Local optimisation (LO) in the adaptive MSAC engine: each time a hypothesis becomes the
     best so far, it is polished by this many IRLS iterations (Levenberg-Marquardt on
@@ -202,6 +233,9 @@ struct CV_EXPORTS EssentialReport
     int localOptimisations = 0;     //!< LO runs (EssentialParams::loIterations)
     int localOptimisationsKept = 0; //!< LO runs whose polished model lowered the MSAC cost
     int sprtRejections = 0;         //!< hypotheses rejected by the SPRT (EssentialParams::sprt)
+    /** The plane-and-parallax check (EssentialParams::planeParallax) found the search's winner
+    dominated by a plane and replaced it with a better-supported model. */
+    bool planeParallaxKept = false;
 
     double timeSetupMs = 0;  //!< input checks and normalisation
     double timeSearchMs = 0; //!< sampling, solving and scoring

@@ -1,0 +1,49 @@
+// This file is part of opencv_essential, licensed under the Apache License, Version 2.0.
+// See the LICENSE file at the top of the source tree.
+
+// The plane-and-parallax check of a search's winner. When most inliers of a scene lie on one plane,
+// a minimal sample drawn from the plane does not fix E: the plane's homography decomposes into two
+// poses (the "twins"), and noise moves the solutions along a whole family that fits the plane. Only
+// the points off the plane tell them apart, and a search that stops on a model supported by the
+// plane alone keeps whichever it met first, often degrees off. Given the
+// plane's homography H (calibrated: H ~ R + t n^T / d), every true E is [e']x H with e' ~ t the
+// epipole of view 2, and each off-plane correspondence (x1, x2) puts e' on the line (H x1) x x2:
+// two of them give e' and a full E. Sampling pairs among the points H does not explain is a 2-point
+// search (as DEGENSAC does for fundamental matrices), so the off-plane inliers are found with few
+// samples even when they are a small share of the data.
+
+#ifndef OPENCV_ESSENTIAL_RANSAC_PLANE_PARALLAX_HPP
+#define OPENCV_ESSENTIAL_RANSAC_PLANE_PARALLAX_HPP
+
+#include "problem.hpp"
+#include "ransac/msac_score.hpp"
+
+#include <opencv2/core.hpp>
+
+namespace cv {
+namespace essential {
+namespace ransac {
+
+struct PlaneParallaxResult
+{
+    bool improved = false;   //!< E below has a lower MSAC cost than the model checked
+    Matx33d E;               //!< the better model (when improved)
+    Score score;             //!< its MSAC score on all points (when improved)
+    bool planeFound = false; //!< the model's inliers are dominated by one homography
+    int planeInliers = 0;    //!< points of the whole problem within the homography's band
+    int samples = 0;         //!< 2-point parallax samples drawn
+};
+
+/** Checks the model E (MSAC score `score` on `problem`): fits a homography to its inliers (OpenCV's
+RANSAC homography), and when that homography explains at least kPlaneShare of them, draws pairs of
+points the homography does not explain, builds E = [e']x H from each, projects it onto the
+essential manifold and keeps the best by MSAC cost if it beats `score`. The number of pairs follows
+the confidence for the best off-plane inlier ratio so far, at most kMaxParallaxSamples. */
+PlaneParallaxResult checkPlaneAndParallax(const Problem& problem, const Matx33d& E,
+                                          const Score& score, double confidence, RNG& rng);
+
+} // namespace ransac
+} // namespace essential
+} // namespace cv
+
+#endif

@@ -15,6 +15,7 @@
 #include "hard_scenes.hpp"
 
 #include <opencv2/calib3d.hpp>
+#include <opencv2/imgproc.hpp>
 
 #include <gtest/gtest.h>
 
@@ -121,7 +122,7 @@ TEST(HardScenes, DominantPlaneKeepsItsPromises)
             // about 1.4 sigma, so nearly all stay beyond 3 sigma).
             EXPECT_LE(transferFraction(H, off1, off2, 3 * cfg.noisePx), 0.1);
             // The plane fills a good part of image 1: its points' bounding box covers >= 25%.
-            const cv::Rect2d box =
+            const cv::Rect box =
                 cv::boundingRect(std::vector<cv::Point2f>(plane1.begin(), plane1.end()));
             EXPECT_GE(box.area(), 0.25 * cfg.width * cfg.height);
             // Both cameras see the plane's front: the same side of it.

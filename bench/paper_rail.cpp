@@ -17,6 +17,7 @@
 #include "cli_common.hpp"
 #include "frontend/frontend.hpp"
 #include "frontend/sequence_io.hpp"
+#include "match_cache.hpp"
 
 #include <opencv2/calib3d.hpp>
 #include <opencv2/core.hpp>
@@ -39,6 +40,8 @@
 
 namespace {
 
+using essential_bench::loadMatches;
+using essential_bench::saveMatches;
 using essential_samples::elapsedMs;
 using essential_samples::fail;
 using essential_samples::isOption;
@@ -236,33 +239,6 @@ std::vector<std::pair<int, int>> choosePairs(const std::map<int, Pose>& frames,
         }
     }
     return pairs;
-}
-
-// Every match of a pair (keepFraction 1), in matchFeatures' order, with its descriptor distance.
-bool loadMatches(const std::string& path, essential_samples::Matches& m)
-{
-    std::ifstream in(path, std::ios::binary);
-    int n = 0;
-    if (!in.read(reinterpret_cast<char*>(&n), sizeof n) || n < 0 || n > 10000000) return false;
-    m.points1.resize(n);
-    m.points2.resize(n);
-    m.distances.resize(n);
-    in.read(reinterpret_cast<char*>(m.points1.data()), n * sizeof(cv::Point2f));
-    in.read(reinterpret_cast<char*>(m.points2.data()), n * sizeof(cv::Point2f));
-    in.read(reinterpret_cast<char*>(m.distances.data()), n * sizeof(float));
-    m.candidates = n;
-    return static_cast<bool>(in);
-}
-
-void saveMatches(const std::string& path, const essential_samples::Matches& m)
-{
-    std::ofstream out(path, std::ios::binary);
-    const int n = static_cast<int>(m.points1.size());
-    out.write(reinterpret_cast<const char*>(&n), sizeof n);
-    out.write(reinterpret_cast<const char*>(m.points1.data()), n * sizeof(cv::Point2f));
-    out.write(reinterpret_cast<const char*>(m.points2.data()), n * sizeof(cv::Point2f));
-    out.write(reinterpret_cast<const char*>(m.distances.data()), n * sizeof(float));
-    if (!out) fail("cannot write the match cache '" + path + "'");
 }
 
 // The indices of a variant's matches among all of a pair's matches, in random order: the best

@@ -136,11 +136,19 @@ void applyOption(const std::string& key, const std::string& value,
         if (!parseDouble(value, number) || !(number >= 0))
             fail(where + "budgetMs (time budget) is a number of ms >= 0", 2);
         params.timeBudgetMs = number;
-    }
-    // ---- New EssentialParams keys go here (e.g. budget, plane), one `else if` each. ----
-    else {
+    } else if (key == "budget") {
+        if (value == "opencv")
+            params.sampleBudget = cv::essential::BUDGET_OPENCV_TIME;
+        else if (value == "confidence")
+            params.sampleBudget = cv::essential::BUDGET_CONFIDENCE;
+        else
+            fail(where + "budget is opencv or confidence", 2);
+    } else if (key == "plane") {
+        if (!parseBool(value, params.planeParallax)) fail(where + "plane is 0 or 1", 2);
+    } else {
         fail("unknown ours option '" + key +
-                 "' (known: solver, sampler, maxIters, lo, sprt, threshold, budgetMs)",
+                 "' (known: solver, sampler, maxIters, lo, sprt, threshold, budgetMs, budget, "
+                 "plane)",
              2);
     }
 }
@@ -243,6 +251,14 @@ std::vector<Problem> syntheticProblems(const std::string& set, const Options& o)
                 essential_test::RepeatedStructureConfig cfg;
                 cfg.numPoints = o.points;
                 cfg.inlierRatio = o.ratios[r];
+                // Look-alikes in 4 groups totalling 60% of the inliers' count: each group is a
+                // strong false structure (a quarter of the truth's support, planar, compact), yet
+                // the true E keeps the largest support, so the set measures the search and not an
+                // impossible tie-break (with half of all outliers shifted, one group outnumbers
+                // the inliers below 14% inliers).
+                cfg.numGroups = 4;
+                cfg.shiftedFraction =
+                    std::min(0.5, 0.6 * cfg.inlierRatio / std::max(1e-9, 1.0 - cfg.inlierRatio));
                 s = essential_test::makeRepeatedStructure(cfg, seed);
             } else {
                 essential_test::ClusteredInliersConfig cfg;

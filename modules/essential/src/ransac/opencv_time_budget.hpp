@@ -43,7 +43,7 @@ ratio is smaller), so that a call that uses its whole budget still stays below O
 constexpr double kOpenCvTimeShare = 0.75;
 
 /** Samples that cost kOpenCvTimeShare of the time cv::findEssentialMat's RANSAC spends on maxIters
-iterations with n points (about 19 maxIters at n = 500, 24 maxIters at n = 4000). */
+iterations with n points (about 20 maxIters at n = 500, 24 maxIters at n = 4000). */
 inline int opencvTimeSamples(int maxIters, int n)
 {
     const double samples =

@@ -50,7 +50,7 @@ enum EssentialSampleBudget {
     BUDGET_CONFIDENCE = 0,
     /** At least as many samples as fit in three quarters of the time cv::findEssentialMat's RANSAC
     spends on maxIters iterations with the same number of points, by a fixed cost model of both
-    (about 19 maxIters samples at N = 500, 24 maxIters at N = 4000;
+    (about 20 maxIters samples at N = 500, 24 maxIters at N = 4000;
     src/ransac/opencv_time_budget.hpp has the measurements). The result stays deterministic: the
     cap is a number of samples, not a clock. Data on which the stopping rule is met (most of them)
     stop as early as with BUDGET_CONFIDENCE. */

@@ -9,6 +9,8 @@
 
 #include <opencv2/calib3d.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
 namespace cv {
@@ -35,6 +37,16 @@ constexpr int kMaxParallaxSamples = 500;
 polished by this many IRLS iterations (the search's local optimisation uses 2 thresholds and 5
 iterations; a model built on an estimated homography starts further off). */
 constexpr double kLooseBand = 3.0;
+
+/** The first this many 2-point models give the chance level of off-plane support (their median). */
+constexpr int kChanceSamples = 50;
+
+/** A replacement must gain at least this many standard deviations of the chance count (Poisson:
+sqrt of the chance level) off the plane. Measured on 30 dominant-plane scenes at 10% inliers (the
+search's winner checked without it): the replacements that turned a right model wrong gained 0 to 8
+off-plane inliers at chance levels 9 to 16, those that turned a wrong model right 10 to 20 (one -2);
+2.5 sigmas keeps 6 of the 7 fixes and none of the 5 harms. */
+constexpr double kSignificance = 2.5;
 constexpr int kPolishIterations = 10;
 
 /** The homography's own RANSAC (OpenCV's findHomography on the model's inliers, which are mostly
@@ -103,6 +115,20 @@ PlaneParallaxResult checkPlaneAndParallax(const Problem& problem, const Matx33d&
     const int m = static_cast<int>(offPlane.size());
     if (m < 2) return result;
 
+    // The points off the plane as a problem of their own, to count a model's inliers among them.
+    std::vector<Point2d> o1, o2;
+    for (int i : offPlane) {
+        o1.push_back(problem.p1[i]);
+        o2.push_back(problem.p2[i]);
+    }
+    const Problem off = makeProblem(o1, o2, problem.threshold, problem.distance);
+    std::vector<uchar> offMask(static_cast<size_t>(m));
+    auto offInliers = [&](const Matx33d& model) {
+        return inlierMask(model, off, problem.threshold, offMask.data());
+    };
+    result.offPlaneBefore = offInliers(E);
+    std::vector<int> chance;
+
     // Each off-plane correspondence's line (H x1) x x2 through the epipole, scaled to unit normal
     // so that l . e is a point-line distance in image 2.
     std::vector<Vec3d> lines(static_cast<size_t>(m));
@@ -163,6 +189,8 @@ PlaneParallaxResult checkPlaneAndParallax(const Problem& problem, const Matx33d&
             lines[static_cast<size_t>(idx[0])].cross(lines[static_cast<size_t>(idx[1])]);
         if (!(norm(e) > 1e-12)) continue; // parallel lines: the two points do not fix the epipole
         const Matx33d candidate = essentialOf(e);
+        if (static_cast<int>(chance.size()) < kChanceSamples)
+            chance.push_back(offInliers(candidate));
         const Score s = scoreMsac(candidate, loose, bestLoose);
         if (!(s.cost < bestLoose)) continue;
         bestLoose = s.cost;
@@ -174,6 +202,17 @@ PlaneParallaxResult checkPlaneAndParallax(const Problem& problem, const Matx33d&
             needed = std::min(kMaxParallaxSamples,
                               requiredIterations(confidence, w * w, kMaxParallaxSamples));
         }
+    }
+    if (!chance.empty()) {
+        std::nth_element(chance.begin(), chance.begin() + chance.size() / 2, chance.end());
+        result.offPlaneChance = chance[chance.size() / 2];
+    }
+    if (result.improved) {
+        result.offPlaneAfter = offInliers(result.E);
+        // A polished model slides along the family of models that fit the plane and can gather
+        // outliers by chance: keep it only when its gain off the plane clearly exceeds chance.
+        const double gain = result.offPlaneAfter - result.offPlaneBefore;
+        if (gain < kSignificance * std::sqrt(result.offPlaneChance + 1.0)) result.improved = false;
     }
     return result;
 }

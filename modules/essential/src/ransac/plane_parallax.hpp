@@ -32,6 +32,10 @@ struct PlaneParallaxResult
     bool planeFound = false; //!< the model's inliers are dominated by one homography
     int planeInliers = 0;    //!< points of the whole problem within the homography's band
     int samples = 0;         //!< 2-point parallax samples drawn
+    /** Inliers among the points off the plane: of the model checked, of the best polished
+    2-point model, and the median over the first 2-point models drawn (what a model of the plane
+    with a wrong epipole gathers by chance). */
+    int offPlaneBefore = 0, offPlaneAfter = 0, offPlaneChance = 0;
 };
 
 /** Checks the model E (MSAC score `score` on `problem`): fits a homography to its inliers (OpenCV's

@@ -61,8 +61,15 @@ Differences from `cv::findEssentialMat` and `cv::recoverPose` that a caller may 
   correspondences among the inliers) gives an empty E and an all-zero mask;
 - a scene that does not determine the pose (no parallax, or a plane) still gives E, and the
   EssentialReport of the module's own overload says so (EssentialReport::degenerate);
-- `maxIters` keeps OpenCV's meaning of a confidence budget: an iterative solver that solves only a
-  fraction s of outlier-free samples may draw maxIters / s samples (see EssentialParams::maxIters);
+- `maxIters` is a budget, not a count of samples: the search may draw as many samples as fit in
+  three quarters of the time OpenCV's RANSAC spends on `maxIters` iterations with as many points
+  (about 20 maxIters at N = 500; EssentialParams::sampleBudget), and at least maxIters / s for an
+  iterative solver that solves a fraction s of outlier-free samples (EssentialParams::maxIters).
+  Data on which the confidence is reached stop as early as before; hard data (few inliers) get the
+  time OpenCV would have spent and are right more often (docs/HARD_PAIRS.md);
+- when the winner's inliers are dominated by one plane, models fixed by the points off the plane
+  are tried and kept when clearly better supported (EssentialParams::planeParallax): planar
+  scenes are where a search stops on the plane's twin pose;
 - the returned E is refined by IRLS on the points near the search winner (set
   EssentialParams::refine = false in the module's own overload to skip this), and the mask is that
   of the refined E;
@@ -83,8 +90,9 @@ Differences from `cv::findEssentialMat` and `cv::recoverPose` that a caller may 
   allocated as it was, its UsacParams form leaves the caller's mask untouched);
 - the USAC method flags and the UsacParams overload map onto the module's own engine (adaptive
   MSAC with IRLS local optimisation, PROSAC, SPRT) as in the tables below, in the spirit of
-  OpenCV's usac::setParameters; OpenCV's graph-cut and sigma-consensus LO, MAGSAC++ scoring, NAPSAC
-  sampling and parallel RANSAC are not implemented. Unlike OpenCV 4.6, whose USAC flags ignore
+  OpenCV's usac::setParameters; OpenCV's graph-cut and sigma-consensus LO, MAGSAC++ scoring and
+  parallel RANSAC are not implemented; the NAPSAC samplers are the module's own (local samples on a
+  grid over both images). Unlike OpenCV 4.6, whose USAC flags ignore
   `maxIters` (always 1000), the flags honour it.
 
 The `method` flags of the drop-in overloads. Every flag keeps `prob`, `threshold` and `maxIters`;
@@ -126,7 +134,7 @@ The UsacParams overload reads every field of OpenCV 4.6's UsacParams:
 | `maxIterations`        | as `maxIters`                                                     |
 | `randomGeneratorState` | the seed, read as an unsigned 32-bit value                        |
 | `score`                | RANSAC, MSAC, MAGSAC: MSAC; LMEDS: the LMedS engine (1)           |
-| `sampler`              | UNIFORM; PROSAC (sorted points); NAPSAC, PROGRESSIVE_NAPSAC: (2)  |
+| `sampler`              | UNIFORM; PROSAC (sorted points); NAPSAC; PROGRESSIVE_NAPSAC (2)   |
 | `loMethod`             | LOCAL_OPTIM_NULL: no LO; every other method: IRLS LO (3)          |
 | `loIterations`         | IRLS iterations of each LO (0: no LO)                             |
 | `loSampleSize`         | LO on a random subset of this many inliers (0: all) (4)           |
@@ -134,13 +142,14 @@ The UsacParams overload reads every field of OpenCV 4.6's UsacParams:
 | `neighborsSearch`      | ignored (6)                                                       |
 
 (1) LMedS derives its threshold from the data and has no LO; SCORE_METHOD_MAGSAC scores by MSAC
-with `threshold` (MAGSAC++ is not implemented). (2) The NAPSAC samplers raise StsNotImplemented
-naming the option. (3) LOCAL_OPTIM_INNER_LO, LOCAL_OPTIM_INNER_AND_ITER_LO, LOCAL_OPTIM_GC and
+with `threshold` (MAGSAC++ is not implemented). (2) NAPSAC draws every sample among
+neighbours (a cell of a 16 x 16 to 2 x 2 grid over both images), PROGRESSIVE_NAPSAC every other
+one; with SCORE_METHOD_LMEDS they raise StsNotImplemented naming the option. (3) LOCAL_OPTIM_INNER_LO, LOCAL_OPTIM_INNER_AND_ITER_LO, LOCAL_OPTIM_GC and
 LOCAL_OPTIM_SIGMA all run the module's IRLS local optimisation with `loIterations` and
 `loSampleSize`. (4) 1 to 4 raise StsBadArg; OpenCV 4.6's default of 14 is used as given. (5) The
 search runs on one thread; the result is the same either way. (6) OpenCV uses the neighbourhood
-graph only in the NAPSAC samplers (which raise here) and in graph-cut LO (replaced here by IRLS LO),
-so it cannot change the result. Invalid values of score, sampler, loMethod, loIterations or
+graph in its NAPSAC samplers (the module's use their own grid) and in graph-cut LO (replaced here by
+IRLS LO), so it cannot change the result. Invalid values of score, sampler, loMethod, loIterations or
 loSampleSize raise StsBadArg naming the field.
 
 OpenCV 4.7 added `final_polisher` and `final_polisher_iterations` to UsacParams; 4.6 has neither,
@@ -212,8 +221,8 @@ CV_EXPORTS Mat findEssentialMatIter(InputArray points1, InputArray points2,
 /** @overload UsacParams form.
 
 Every field of OpenCV 4.6's UsacParams is read, as the module description's table says: confidence,
-threshold, maxIterations, randomGeneratorState, score (MSAC or LMedS), sampler (uniform or PROSAC;
-the NAPSAC samplers raise StsNotImplemented naming the option), loMethod / loIterations /
+threshold, maxIterations, randomGeneratorState, score (MSAC or LMedS), sampler (uniform, PROSAC, NAPSAC or
+progressive NAPSAC), loMethod / loIterations /
 loSampleSize (IRLS local optimisation); isParallel and neighborsSearch cannot change the result and
 are ignored. Invalid values raise StsBadArg naming the field. As in OpenCV, the points are
 undistorted with each camera's own coefficients when there are any (then read as the two-camera

@@ -38,9 +38,10 @@ struct PlaneParallaxResult
     int offPlaneBefore = 0, offPlaneAfter = 0, offPlaneChance = 0;
 };
 
-/** Checks the model E (MSAC score `score` on `problem`): fits a homography to its inliers (OpenCV's
-RANSAC homography), and when that homography explains at least kPlaneShare of them, draws pairs of
-points the homography does not explain, builds E = [e']x H from each, projects it onto the
+/** Checks the model E (MSAC score `score` on `problem`) when its inliers are fewer than half of the
+points (an easy search has already weighed the off-plane points): fits a homography to its inliers
+(OpenCV's RANSAC homography), and when that homography explains at least kPlaneShare of them, draws
+pairs of points the homography does not explain, builds E = [e']x H from each, projects it onto the
 essential manifold and keeps the best by MSAC cost if it beats `score`. The number of pairs follows
 the confidence for the best off-plane inlier ratio so far, at most kMaxParallaxSamples. */
 PlaneParallaxResult checkPlaneAndParallax(const Problem& problem, const Matx33d& E,

@@ -116,7 +116,9 @@ struct CV_EXPORTS EssentialParams
     the true model on a fraction s of outlier-free samples (EssentialSolver::hitProbabilityAt() at
     the pose of the best model so far, 0.28 to 0.41 for gn) may draw up to maxIters / s samples, so
     that the confidence reached at the cap is the same.
-    Those samples are still several times cheaper than OpenCV's (see docs/SOLVERS.md). */
+    Those samples are still several times cheaper than OpenCV's (see docs/SOLVERS.md). With
+    sampleBudget = BUDGET_OPENCV_TIME (the default) the cap is raised to the samples that fit in
+    three quarters of OpenCV's time for maxIters iterations. */
     int maxIters = 1000;
 
     /** The sample cap of ENGINE_ADAPTIVE with method RANSAC: BUDGET_OPENCV_TIME (default) or
@@ -159,12 +161,18 @@ struct CV_EXPORTS EssentialParams
     Must be 0 or >= 5 (IRLS fits five degrees of freedom). */
     int loSampleSize = 0;
 
-    /** How samples are drawn: `cv::SAMPLING_UNIFORM` (default) or `cv::SAMPLING_PROSAC` (Chum and
-    Matas' progressive sampling: the points must be sorted by quality, best first, as for OpenCV's
-    USAC_PROSAC; samples come from a growing pool of the best points, and the adaptive engine may
-    stop as soon as PROSAC's non-randomness and maximality conditions hold for some pool). PROSAC
-    is supported by ENGINE_ADAPTIVE (RANSAC and LMEDS); ENGINE_PREEMPTIVE and ENGINE_OPENCV raise
-    StsNotImplemented, and so do the NAPSAC samplers. */
+    /** How samples are drawn:
+    - `cv::SAMPLING_UNIFORM` (default);
+    - `cv::SAMPLING_PROSAC` (Chum and Matas' progressive sampling: the points must be sorted by
+      quality, best first, as for OpenCV's USAC_PROSAC; samples come from a growing pool of the best
+      points, and the adaptive engine may stop as soon as PROSAC's non-randomness and maximality
+      conditions hold for some pool). Supported by ENGINE_ADAPTIVE (RANSAC and LMEDS);
+    - `cv::SAMPLING_NAPSAC`: every sample spatially local, a seed and four of its neighbours in
+      both images (a cell of a 16 x 16, 8 x 8, 4 x 4 or 2 x 2 grid over each image), for data whose
+      inliers cluster; `cv::SAMPLING_PROGRESSIVE_NAPSAC`: local and uniform samples in turn. Both
+      need ENGINE_ADAPTIVE with RANSAC.
+    Other engines raise StsNotImplemented for a sampler they do not support. docs/HARD_PAIRS.md
+    measures each on hard data. */
     int sampler = SAMPLING_UNIFORM;
 
     /** Verify hypotheses with Wald's sequential probability ratio test (Matas and Chum, R-RANSAC
@@ -221,7 +229,7 @@ struct CV_EXPORTS EssentialReport
 
     int numPoints = 0;           //!< correspondences given
     int inliers = 0;             //!< non-zero entries of the returned mask
-    int iterations = 0;          //!< samples drawn (at most maxIters / solver success rate)
+    int iterations = 0;          //!< samples drawn (EssentialParams::maxIters, sampleBudget)
     int hypothesesGenerated = 0; //!< solver calls made (one per sample, plus LO's inner samples)
     int hypothesesConverged = 0; //!< essential matrices the solver returned
     int hypothesesScored = 0;    //!< essential matrices scored against the data

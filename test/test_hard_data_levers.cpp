@@ -145,7 +145,7 @@ TEST(PlaneParallax, RecoversThePoseFromThePlanesTwin)
                 cv::essential::ransac::scoreMsac(twin, problem);
             cv::RNG rng(seed);
             const cv::essential::ransac::PlaneParallaxResult r =
-                cv::essential::ransac::checkPlaneAndParallax(problem, twin, before, 0.999, rng);
+                cv::essential::ransac::checkPlaneAndParallax(problem, twin, before, rng);
             SCOPED_TRACE(testing::Message() << "seed " << seed << " solution " << k);
             EXPECT_TRUE(r.planeFound);
             ASSERT_TRUE(r.improved);
@@ -176,7 +176,7 @@ TEST(PlaneParallax, LeavesModelsWithoutADominantPlaneAlone)
         const cv::essential::ransac::Score score = cv::essential::ransac::scoreMsac(s.E, problem);
         cv::RNG rng(seed);
         const cv::essential::ransac::PlaneParallaxResult r =
-            cv::essential::ransac::checkPlaneAndParallax(problem, s.E, score, 0.999, rng);
+            cv::essential::ransac::checkPlaneAndParallax(problem, s.E, score, rng);
         EXPECT_FALSE(r.planeFound) << "seed " << seed;
         EXPECT_FALSE(r.improved) << "seed " << seed;
         EXPECT_EQ(r.samples, 0) << "seed " << seed;

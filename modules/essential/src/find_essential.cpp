@@ -270,7 +270,7 @@ Mat estimate(const Problem& problem, const EssentialParams& params, OutputArray 
         params.method == RANSAC) {
         const ransac::Score before = ransac::scoreMsac(found.E, problem);
         const ransac::PlaneParallaxResult checked =
-            ransac::checkPlaneAndParallax(problem, found.E, before, params.confidence, rng);
+            ransac::checkPlaneAndParallax(problem, found.E, before, rng);
         if (checked.improved) {
             found.E = checked.E;
             found.inliers = checked.score.inliers;

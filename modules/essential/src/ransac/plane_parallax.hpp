@@ -39,13 +39,14 @@ struct PlaneParallaxResult
 };
 
 /** Checks the model E (MSAC score `score` on `problem`) when its inliers are fewer than half of the
-points (an easy search has already weighed the off-plane points): fits a homography to its inliers
-(OpenCV's RANSAC homography), and when that homography explains at least kPlaneShare of them, draws
-pairs of points the homography does not explain, builds E = [e']x H from each, projects it onto the
-essential manifold and keeps the best by MSAC cost if it beats `score`. The number of pairs follows
-the confidence for the best off-plane inlier ratio so far, at most kMaxParallaxSamples. */
+points (an easy search has already weighed the off-plane points): after quick 4-point probes for a
+plane among its inliers, fits a homography to them (OpenCV's RANSAC homography), and when it
+explains at least kPlaneShare of them, draws kMaxParallaxSamples pairs of points the homography does
+not explain, builds E = [e']x H from each (projected onto the essential manifold), polishes the
+best few by IRLS and keeps the best polished model if its MSAC cost is lower than `score`'s and its
+gain of inliers off the plane is well beyond chance. */
 PlaneParallaxResult checkPlaneAndParallax(const Problem& problem, const Matx33d& E,
-                                          const Score& score, double confidence, RNG& rng);
+                                          const Score& score, RNG& rng);
 
 } // namespace ransac
 } // namespace essential

@@ -60,6 +60,10 @@ const char* const kUsage =
     "                    (DIR/pairs/aloeL.jpg, aloeR.jpg with ORB descriptors, the best 20% or\n"
     "                    30% of the matches); default all; a set whose data are missing is "
     "skipped\n"
+    "                    Easy sets, to check that nothing gets slower there (not in the default):\n"
+    "                    synth-protocol (the paper's synthetic protocol, 500 points, 90% and 50%\n"
+    "                    inliers, --problems each) and rail-best20 (the rail pairs' best 20% of\n"
+    "                    the matches by descriptor distance, the front end's default)\n"
     "  --methods LIST    cv_ransac, usac_magsac, usac_accurate, usac_prosac "
     "(cv::findEssentialMat,\n"
     "                    prob 0.999, threshold 1 px, 1000 iterations), dropin (the module's\n"
@@ -234,6 +238,38 @@ double trueInlierRate(const Problem& p)
     return p.p1.empty() ? 0.0 : double(good) / p.p1.size();
 }
 
+/** synth-protocol: the paper's synthetic protocol (test/synthetic_scene.hpp) at 90% and 50%
+inliers, the easy end, where the hard-data levers must cost nothing. No descriptor distances. */
+std::vector<Problem> protocolProblems(const Options& o)
+{
+    std::vector<Problem> out;
+    for (double ratio : {0.9, 0.5}) {
+        for (int k = 0; k < o.problems; ++k) {
+            essential_test::SceneConfig cfg;
+            cfg.inlierRatio = ratio;
+            const essential_test::SyntheticScene s = essential_test::makeScene(
+                cfg, o.seed * 1000003ULL + 700000ULL +
+                         static_cast<std::uint64_t>(ratio * 100) * 1000ULL +
+                         static_cast<std::uint64_t>(k));
+            Problem p;
+            p.set = "synth-protocol";
+            p.name = cv::format("r%.2f-%d", ratio, k);
+            p.ratioOrOffset = ratio;
+            for (size_t i = 0; i < s.px1.size(); ++i) {
+                p.p1.emplace_back(s.px1[i]);
+                p.p2.emplace_back(s.px2[i]);
+            }
+            p.distance.assign(s.px1.size(), 0.0f);
+            p.K = s.K;
+            p.R = s.R;
+            p.t = s.t;
+            p.trueInlierRate = double(s.numInliers) / s.px1.size();
+            out.push_back(std::move(p));
+        }
+    }
+    return out;
+}
+
 std::vector<Problem> syntheticProblems(const std::string& set, const Options& o)
 {
     std::vector<Problem> out;
@@ -306,8 +342,9 @@ essential_samples::Matches pairMatches(const std::string& cachePath, Features fe
 }
 
 /** rail-random20 and rail-all problems (both from one matching of each pair). */
-void railProblems(const Options& o, bool random20, bool all, std::vector<Problem>& outRandom,
-                  std::vector<Problem>& outAll)
+void railProblems(const Options& o, bool random20, bool all, bool best20,
+                  std::vector<Problem>& outRandom, std::vector<Problem>& outAll,
+                  std::vector<Problem>& outBest)
 {
     essential_samples::FrontEndParams params;
     params.keepFraction = 1.0; // every match; the sets select from them
@@ -370,6 +407,23 @@ void railProblems(const Options& o, bool random20, bool all, std::vector<Problem
                     p.distance = m.distances;
                     p.trueInlierRate = trueInlierRate(p);
                     outAll.push_back(std::move(p));
+                }
+                if (best20) {
+                    // The best 20% by descriptor distance (the front end's own selection rule).
+                    std::vector<int> order(m.points1.size());
+                    std::iota(order.begin(), order.end(), 0);
+                    std::stable_sort(order.begin(), order.end(),
+                                     [&](int a, int b) { return m.distances[a] < m.distances[b]; });
+                    order.resize(static_cast<size_t>(std::ceil(0.2 * order.size())));
+                    Problem p = base;
+                    p.set = "rail-best20";
+                    for (int k : order) {
+                        p.p1.push_back(m.points1[k]);
+                        p.p2.push_back(m.points2[k]);
+                        p.distance.push_back(m.distances[k]);
+                    }
+                    p.trueInlierRate = trueInlierRate(p);
+                    outBest.push_back(std::move(p));
                 }
                 if (random20) {
                     // A fixed random 20% per pair (the shuffles then reorder it).
@@ -702,8 +756,8 @@ Options parseOptions(int argc, char** argv)
         }
     }
     static const std::vector<std::string> known = {
-        "synth-plane", "synth-repeated", "synth-clustered", "rail-random20",
-        "rail-all",    "aloe-orb20",     "aloe-orb30"};
+        "synth-plane", "synth-repeated", "synth-clustered", "rail-random20", "rail-all",
+        "aloe-orb20",  "aloe-orb30",     "synth-protocol",  "rail-best20"};
     for (const std::string& set : o.sets)
         if (std::find(known.begin(), known.end(), set) == known.end())
             fail("--sets: unknown set '" + set + "'", 2);
@@ -732,14 +786,17 @@ int run(int argc, char** argv)
     std::map<std::string, std::vector<Problem>> bySet;
     const auto start = std::chrono::steady_clock::now();
     for (const std::string& set : o.sets)
-        if (set.rfind("synth-", 0) == 0) bySet[set] = syntheticProblems(set, o);
-    if (wants("rail-random20") || wants("rail-all")) {
+        if (set == "synth-protocol")
+            bySet[set] = protocolProblems(o);
+        else if (set.rfind("synth-", 0) == 0)
+            bySet[set] = syntheticProblems(set, o);
+    if (wants("rail-random20") || wants("rail-all") || wants("rail-best20")) {
         if (!fileExists(o.data + "/rail-a")) {
             std::fprintf(stderr, "hard_pairs: rail sets: skipped, no '%s/rail-a'\n",
                          o.data.c_str());
         } else {
-            railProblems(o, wants("rail-random20"), wants("rail-all"), bySet["rail-random20"],
-                         bySet["rail-all"]);
+            railProblems(o, wants("rail-random20"), wants("rail-all"), wants("rail-best20"),
+                         bySet["rail-random20"], bySet["rail-all"], bySet["rail-best20"]);
         }
     }
     if (wants("aloe-orb20") || wants("aloe-orb30")) {

@@ -316,7 +316,12 @@ void runOne(FuzzInput& in)
         params.loIterations = in.pick(16) == 0 ? in.pick(8) - 1 : in.pick(8);
         params.loSampleSize =
             in.pick(8) == 0 ? in.pick(12) - 1 : (in.pick(2) ? 0 : 5 + in.pick(20));
-        params.sampler = in.pick(16) == 0 ? in.pick(6) - 1 : (in.pick(4) ? 0 : cv::SAMPLING_PROSAC);
+        static const int samplers[] = {cv::SAMPLING_PROSAC, cv::SAMPLING_NAPSAC,
+                                       cv::SAMPLING_PROGRESSIVE_NAPSAC};
+        params.sampler =
+            in.pick(16) == 0 ? in.pick(6) - 1 : (in.pick(4) ? 0 : samplers[in.pick(3)]);
+        params.sampleBudget = in.pick(16) == 0 ? in.pick(4) - 1 : in.pick(2);
+        params.planeParallax = in.pick(2) != 0;
         params.sprt = in.pick(2) != 0;
         params.seed = in.pick(1 << 30);
         params.refine = in.pick(4) != 0;

@@ -63,12 +63,16 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
     // rate at the model's pose (EssentialSolver::hitProbabilityAt).
     int cap = std::max(sampleCap(settings.maxIters, solver.successRate()), settings.minSampleCap);
 
-    // PROSAC: the samples follow the growth schedule with T_N = the sample cap, so that the pool
-    // covers every point by the time the cap is reached.
+    // PROSAC: the samples follow the growth schedule with T_N = the confidence cap, so that the
+    // pool covers every point by the time that cap is reached.
     std::unique_ptr<ProsacSampler> prosac;
     std::unique_ptr<ProsacTermination> prosacStop;
     if (settings.prosac) {
-        prosac.reset(new ProsacSampler(n, buffer.sampleSize, cap));
+        // T_N from the confidence cap alone, not the OpenCV-time budget (settings.minSampleCap,
+        // about 20 times larger): the pool then grows at the pace PROSAC's schedule was set for,
+        // and past T_N the sampler is uniform for the rest of the budget.
+        prosac.reset(new ProsacSampler(n, buffer.sampleSize,
+                                       sampleCap(settings.maxIters, solver.successRate())));
         prosacStop.reset(new ProsacTermination(n, buffer.sampleSize));
         buffer.prosac = prosac.get();
     }

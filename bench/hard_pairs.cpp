@@ -149,10 +149,12 @@ void applyOption(const std::string& key, const std::string& value,
             fail(where + "budget is opencv or confidence", 2);
     } else if (key == "plane") {
         if (!parseBool(value, params.planeParallax)) fail(where + "plane is 0 or 1", 2);
+    } else if (key == "local") {
+        if (!parseBool(value, params.budgetLocalSamples)) fail(where + "local is 0 or 1", 2);
     } else {
         fail("unknown ours option '" + key +
                  "' (known: solver, sampler, maxIters, lo, sprt, threshold, budgetMs, budget, "
-                 "plane)",
+                 "plane, local)",
              2);
     }
 }

@@ -322,6 +322,7 @@ void runOne(FuzzInput& in)
             in.pick(16) == 0 ? in.pick(6) - 1 : (in.pick(4) ? 0 : samplers[in.pick(3)]);
         params.sampleBudget = in.pick(16) == 0 ? in.pick(4) - 1 : in.pick(2);
         params.planeParallax = in.pick(2) != 0;
+        params.budgetLocalSamples = in.pick(2) != 0;
         params.sprt = in.pick(2) != 0;
         params.seed = in.pick(1 << 30);
         params.refine = in.pick(4) != 0;

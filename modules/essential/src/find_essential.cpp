@@ -244,8 +244,11 @@ Mat estimate(const Problem& problem, const EssentialParams& params, OutputArray 
                            : params.sampler == SAMPLING_PROGRESSIVE_NAPSAC ? 2
                                                                            : 0;
     settings.sprt = params.sprt; // used by the adaptive MSAC loop only
-    if (params.sampleBudget == BUDGET_OPENCV_TIME)
+    if (params.sampleBudget == BUDGET_OPENCV_TIME) {
         settings.minSampleCap = ransac::opencvTimeSamples(params.maxIters, n);
+        settings.localSamplesInBudget =
+            params.budgetLocalSamples && params.sampler == SAMPLING_UNIFORM;
+    }
     if (hasTimeBudget(params))
         settings.deadline =
             ransac::Deadline::after(params.timeBudgetMs - msSince(start) - finishingReserveMs(n));

@@ -43,6 +43,9 @@ struct SearchSettings
     0: none, 1: all (NAPSAC), 2: every other one (the progressive mix of local and global samples).
     */
     int napsacEvery = 0;
+    /** Adaptive MSAC: past the confidence cap (sampleCap() of maxIters, up to minSampleCap),
+    every other sample is spatially local (napsacEvery = 2 from then on). */
+    bool localSamplesInBudget = false;
     /** Adaptive MSAC: verify hypotheses with Wald's SPRT. */
     bool sprt = false;
     /** Adaptive MSAC: the sample cap is at least this many samples (0: sampleCap() alone), the

@@ -216,8 +216,18 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
         return need;
     };
 
+    // Local samples in the extended budget: once the confidence cap is passed (the data are hard:
+    // the stopping rule has not been met), every other sample is spatially local, built here so
+    // that easy calls never pay for the grid.
+    const int confidenceCap = sampleCap(settings.maxIters, solver.successRate());
     while (result.iterations < needed) {
         if ((result.iterations & 7) == 7 && settings.deadline.passed()) break;
+        if (settings.localSamplesInBudget && !napsac && result.iterations >= confidenceCap) {
+            napsac.reset(
+                new NapsacSampler(problem.p1.data(), problem.p2.data(), n, buffer.sampleSize));
+            buffer.napsac = napsac.get();
+            buffer.localEvery = 2;
+        }
         if (innerPending && result.iterations >= kInnerMinSamples) {
             localOptimise();
             if (settings.sprt)

@@ -1,0 +1,76 @@
+// This file is part of opencv_essential, licensed under the Apache License, Version 2.0.
+// See the LICENSE file at the top of the source tree.
+
+// The cost model behind EssentialParams::sampleBudget = BUDGET_OPENCV_TIME
+// (src/ransac/opencv_time_budget.hpp): thread CPU time of cv::findEssentialMat (RANSAC, 1000
+// iterations) and of the module's default with the confidence cap, on data with 3% inliers, where
+// both run to their caps, for a range of N. Prints time per OpenCV iteration and per module sample.
+//
+//   essential_opencv_time_model [--reps 3] [--sizes 100,250,500,1000,2000,4000,8000]
+
+#include "bench_common.hpp"
+#include "synthetic_scene.hpp"
+
+#include <opencv2/calib3d.hpp>
+#include <opencv2/essential.hpp>
+
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <ctime>
+
+namespace {
+
+double threadCpuMs()
+{
+    timespec ts;
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return ts.tv_sec * 1e3 + ts.tv_nsec * 1e-6;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    int reps = 3;
+    std::vector<double> sizes = {100, 250, 500, 1000, 2000, 4000, 8000};
+    for (int i = 1; i + 1 < argc; i += 2) {
+        if (!std::strcmp(argv[i], "--reps"))
+            reps = std::atoi(argv[i + 1]);
+        else if (!std::strcmp(argv[i], "--sizes"))
+            sizes = essential_bench::numbers(argv[i + 1]);
+        else {
+            std::fprintf(stderr, "unknown option %s\n", argv[i]);
+            return 2;
+        }
+    }
+    std::printf("| N | OpenCV us / iteration | module us / sample | ratio |\n|---|---|---|---|\n");
+    for (double size : sizes) {
+        const int n = static_cast<int>(size);
+        double cvMs = 0, ourMs = 0;
+        long samples = 0;
+        for (int r = 0; r < reps; ++r) {
+            essential_test::SceneConfig cfg;
+            cfg.numPoints = n;
+            cfg.inlierRatio = 0.03; // neither stopping rule is met: both run to their caps
+            const essential_test::SyntheticScene s =
+                essential_test::makeScene(cfg, static_cast<uint64_t>(n) * 10 + r);
+            cv::Mat mask;
+            double t0 = threadCpuMs();
+            cv::findEssentialMat(s.px1, s.px2, s.K, cv::RANSAC, 0.999, 1.0, 1000, mask);
+            cvMs += threadCpuMs() - t0;
+            cv::essential::EssentialParams params;
+            params.sampleBudget = cv::essential::BUDGET_CONFIDENCE;
+            cv::essential::EssentialReport report;
+            t0 = threadCpuMs();
+            cv::essential::findEssentialMatIter(s.px1, s.px2, s.K, params, mask, &report);
+            ourMs += threadCpuMs() - t0;
+            samples += report.iterations;
+        }
+        const double cvUs = 1000.0 * cvMs / (1000.0 * reps);
+        const double ourUs = samples > 0 ? 1000.0 * ourMs / samples : 0.0;
+        std::printf("| %d | %.1f | %.2f | %.1f |\n", n, cvUs, ourUs,
+                    ourUs > 0 ? cvUs / ourUs : 0.0);
+    }
+    return 0;
+}

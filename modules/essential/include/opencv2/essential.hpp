@@ -61,12 +61,14 @@ Differences from `cv::findEssentialMat` and `cv::recoverPose` that a caller may 
   correspondences among the inliers) gives an empty E and an all-zero mask;
 - a scene that does not determine the pose (no parallax, or a plane) still gives E, and the
   EssentialReport of the module's own overload says so (EssentialReport::degenerate);
-- `maxIters` is a budget, not a count of samples: the search may draw as many samples as fit in
-  three quarters of the time OpenCV's RANSAC spends on `maxIters` iterations with as many points
-  (about 20 maxIters at N = 500; EssentialParams::sampleBudget), and at least maxIters / s for an
-  iterative solver that solves a fraction s of outlier-free samples (EssentialParams::maxIters).
-  Data on which the confidence is reached stop as early as before; hard data (few inliers) get the
-  time OpenCV would have spent and are right more often (docs/HARD_PAIRS.md);
+- `maxIters` is a budget, not a count of samples: an iterative solver that solves a fraction s of
+  outlier-free samples may draw maxIters / s samples (EssentialParams::maxIters), and when that cap
+  does not buy one expected good sample at the best model's inlier ratio (hard data: few inliers,
+  or a wrong best model), the search goes on, every other sample spatially local, up to the samples
+  that fit in three quarters of the time OpenCV's RANSAC spends on `maxIters` iterations with as
+  many points (about 20 maxIters at N = 500; EssentialParams::sampleBudget, budgetLocalSamples).
+  Data on which the confidence is reached stop as before; hard data get the time OpenCV would have
+  spent and are right more often (docs/HARD_PAIRS.md);
 - when the winner's inliers are dominated by one plane, models fixed by the points off the plane
   are tried and kept when clearly better supported (EssentialParams::planeParallax): planar
   scenes are where a search stops on the plane's twin pose;
@@ -144,13 +146,14 @@ The UsacParams overload reads every field of OpenCV 4.6's UsacParams:
 (1) LMedS derives its threshold from the data and has no LO; SCORE_METHOD_MAGSAC scores by MSAC
 with `threshold` (MAGSAC++ is not implemented). (2) NAPSAC draws every sample among
 neighbours (a cell of a 16 x 16 to 2 x 2 grid over both images), PROGRESSIVE_NAPSAC every other
-one; with SCORE_METHOD_LMEDS they raise StsNotImplemented naming the option. (3) LOCAL_OPTIM_INNER_LO, LOCAL_OPTIM_INNER_AND_ITER_LO, LOCAL_OPTIM_GC and
-LOCAL_OPTIM_SIGMA all run the module's IRLS local optimisation with `loIterations` and
-`loSampleSize`. (4) 1 to 4 raise StsBadArg; OpenCV 4.6's default of 14 is used as given. (5) The
-search runs on one thread; the result is the same either way. (6) OpenCV uses the neighbourhood
-graph in its NAPSAC samplers (the module's use their own grid) and in graph-cut LO (replaced here by
-IRLS LO), so it cannot change the result. Invalid values of score, sampler, loMethod, loIterations or
-loSampleSize raise StsBadArg naming the field.
+one; with SCORE_METHOD_LMEDS they raise StsNotImplemented naming the option. (3)
+LOCAL_OPTIM_INNER_LO, LOCAL_OPTIM_INNER_AND_ITER_LO, LOCAL_OPTIM_GC and LOCAL_OPTIM_SIGMA all run
+the module's IRLS local optimisation with `loIterations` and `loSampleSize`. (4) 1 to 4 raise
+StsBadArg; OpenCV 4.6's default of 14 is used as given. (5) The search runs on one thread; the
+result is the same either way. (6) OpenCV uses the neighbourhood graph in its NAPSAC samplers (the
+module's use their own grid) and in graph-cut LO (replaced here by IRLS LO), so it cannot change the
+result. Invalid values of score, sampler, loMethod, loIterations or loSampleSize raise StsBadArg
+naming the field.
 
 OpenCV 4.7 added `final_polisher` and `final_polisher_iterations` to UsacParams; 4.6 has neither,
 and the module always ends with its IRLS refinement (EssentialParams::refine).
@@ -221,13 +224,12 @@ CV_EXPORTS Mat findEssentialMatIter(InputArray points1, InputArray points2,
 /** @overload UsacParams form.
 
 Every field of OpenCV 4.6's UsacParams is read, as the module description's table says: confidence,
-threshold, maxIterations, randomGeneratorState, score (MSAC or LMedS), sampler (uniform, PROSAC, NAPSAC or
-progressive NAPSAC), loMethod / loIterations /
-loSampleSize (IRLS local optimisation); isParallel and neighborsSearch cannot change the result and
-are ignored. Invalid values raise StsBadArg naming the field. As in OpenCV, the points are
-undistorted with each camera's own coefficients when there are any (then read as the two-camera
-form reads them, a view copied first), and read as with the USAC flags otherwise; the mask is
-N x 1.
+threshold, maxIterations, randomGeneratorState, score (MSAC or LMedS), sampler (uniform, PROSAC,
+NAPSAC or progressive NAPSAC), loMethod / loIterations / loSampleSize (IRLS local optimisation);
+isParallel and neighborsSearch cannot change the result and are ignored. Invalid values raise
+StsBadArg naming the field. As in OpenCV, the points are undistorted with each camera's own
+coefficients when there are any (then read as the two-camera form reads them, a view copied first),
+and read as with the USAC flags otherwise; the mask is N x 1.
 */
 CV_EXPORTS Mat findEssentialMatIter(InputArray points1, InputArray points2,
                                     InputArray cameraMatrix1, InputArray cameraMatrix2,

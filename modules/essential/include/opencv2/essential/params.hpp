@@ -48,12 +48,14 @@ enum EssentialSampleBudget {
     /** maxIters / s samples, s the solver's hit rate (EssentialParams::maxIters): the confidence
     OpenCV's cap gives a direct solver. */
     BUDGET_CONFIDENCE = 0,
-    /** At least as many samples as fit in three quarters of the time cv::findEssentialMat's RANSAC
-    spends on maxIters iterations with the same number of points, by a fixed cost model of both
-    (about 20 maxIters samples at N = 500, 24 maxIters at N = 4000;
-    src/ransac/opencv_time_budget.hpp has the measurements). The result stays deterministic: the
-    cap is a number of samples, not a clock. Data on which the stopping rule is met (most of them)
-    stop as early as with BUDGET_CONFIDENCE. */
+    /** When even the maxIters / s cap does not buy one expected good sample at the best model's
+    inlier ratio (no model yet, or one as weakly supported as a wrong model on hard data), the
+    search goes on until it has (confidence 1 - 1/e at that ratio), up to the samples that fit in
+    three quarters of the time cv::findEssentialMat's RANSAC spends on maxIters iterations with the
+    same number of points, by a fixed cost model of both (about 20 maxIters samples at N = 500, 24
+    maxIters at N = 4000; src/ransac/opencv_time_budget.hpp has the measurements). The result
+    stays deterministic: the cap is a number of samples, not a clock. Data on which the stopping
+    rule is met within maxIters / s (most of them) stop exactly as with BUDGET_CONFIDENCE. */
     BUDGET_OPENCV_TIME = 1
 };
 

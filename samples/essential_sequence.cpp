@@ -515,6 +515,11 @@ int run(int argc, char** argv)
                 "%.1f ms per pair (matching)\n\n",
                 essential_samples::descriptorName(options.descriptor),
                 detectMs / std::max(1, detections), detections, matchMs / pairs.size());
+    std::printf("cv::essential: sampler %s; without a time budget the search stops at confidence "
+                "0.999 or at its cap, the samples that fit in 3/4 of OpenCV's time for "
+                "--max-iters iterations (local and uniform samples in turn past the confidence "
+                "cap); the plane check is on (docs/HARD_PAIRS.md)\n",
+                essential_samples::samplerName(options.sampler));
     if (haveTruth)
         std::printf("correct: translation direction within %g deg of the truth\n\n",
                     options.thresholdDeg);

@@ -69,16 +69,23 @@ double chanceInlierRate(const Matx33d& E, const Problem& problem, double thresho
     return (hits + 1.0) / (pairs + 1.0);
 }
 
-bool supportIsSignificant(const Matx33d& E, const Problem& problem, double threshold, int inliers,
-                          int sampleSize, int hypotheses)
+int significantInliers(const Matx33d& E, const Problem& problem, double threshold, int sampleSize,
+                       int hypotheses)
 {
     const int n = problem.size();
     const int others = n - sampleSize;
-    if (others <= 0) return true;
+    if (others <= 0) return -1;
     const double lambda = others * chanceInlierRate(E, problem, threshold);
     const int needed = poissonQuantile(lambda, kAlpha / std::max(1, hypotheses));
-    if (needed > others) return true; // no power: cannot tell luck from geometry
-    return inliers - sampleSize >= needed;
+    if (needed > others) return -1; // no power: cannot tell luck from geometry
+    return sampleSize + needed;
+}
+
+bool supportIsSignificant(const Matx33d& E, const Problem& problem, double threshold, int inliers,
+                          int sampleSize, int hypotheses)
+{
+    const int needed = significantInliers(E, problem, threshold, sampleSize, hypotheses);
+    return needed < 0 || inliers >= needed;
 }
 
 } // namespace ransac

@@ -31,6 +31,11 @@ the test has no power and the model is accepted (as cv::findEssentialMat would).
 bool supportIsSignificant(const Matx33d& E, const Problem& problem, double threshold, int inliers,
                           int sampleSize, int hypotheses);
 
+/** The least inlier count (sample included) that supportIsSignificant() accepts for E with
+`hypotheses` hypotheses tried; -1 when the test has no power (every count is accepted). */
+int significantInliers(const Matx33d& E, const Problem& problem, double threshold, int sampleSize,
+                       int hypotheses);
+
 } // namespace ransac
 } // namespace essential
 } // namespace cv

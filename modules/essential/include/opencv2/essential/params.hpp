@@ -53,7 +53,9 @@ enum EssentialSampleBudget {
     search goes on until it has (confidence 1 - 1/e at that ratio), up to the samples that fit in
     three quarters of the time cv::findEssentialMat's RANSAC spends on maxIters iterations with the
     same number of points, by a fixed cost model of both (about 20 maxIters samples at N = 500, 24
-    maxIters at N = 4000; src/ransac/opencv_time_budget.hpp has the measurements). The result
+    maxIters at N = 4000; src/ransac/opencv_time_budget.hpp has the measurements); and only if a
+    model it could find would pass the final support test (not on a few dozen points without
+    geometry). The result
     stays deterministic: the cap is a number of samples, not a clock. Data on which the stopping
     rule is met within maxIters / s (most of them) stop exactly as with BUDGET_CONFIDENCE. */
     BUDGET_OPENCV_TIME = 1

@@ -115,7 +115,10 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
     RNG innerRng(rng.state ^ 0x5851f42d4c957f2dULL);
 
     Score best;
-    int needed = cap;
+    // Until there is a model, the confidence cap: a search that has solved no sample by then has
+    // degenerate data (coincident or collinear points), and the extended budget (settings.
+    // minSampleCap) is only for data whose best model is weak, decided with the first model.
+    int needed = std::min(cap, sampleCap(settings.maxIters, solver.successRate()));
 
     // Local optimisation of the new best model: IRLS on its inliers (or a random subset of them),
     // kept if its MSAC cost on all points is lower.

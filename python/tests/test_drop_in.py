@@ -1,0 +1,41 @@
+# This file is part of opencv_essential, licensed under the Apache License, Version 2.0.
+# Parity of cv_essential.findEssentialMatIter with cv2.findEssentialMat (camera-matrix form).
+import cv2
+import numpy as np
+import pytest
+
+import cv_essential
+
+
+def scene(n=200, seed=1):
+    rng = np.random.default_rng(seed)
+    X = np.column_stack([rng.uniform(-1, 1, n), rng.uniform(-1, 1, n), rng.uniform(3, 8, n)])
+    angle = 0.1
+    R = np.array([[np.cos(angle), 0, np.sin(angle)], [0, 1, 0], [-np.sin(angle), 0, np.cos(angle)]])
+    t = np.array([0.5, 0.05, 0.1])
+    K = np.array([[500.0, 0, 320], [0, 500, 240], [0, 0, 1]])
+    x1 = (K @ X.T).T
+    X2 = (R @ X.T).T + t
+    x2 = (K @ X2.T).T
+    p1 = x1[:, :2] / x1[:, 2:] + rng.normal(0, 0.3, (n, 2))
+    p2 = x2[:, :2] / x2[:, 2:] + rng.normal(0, 0.3, (n, 2))
+    return p1, p2, K, R, t / np.linalg.norm(t)
+
+
+@pytest.mark.parametrize("dtype", [np.float32, np.float64])
+def test_same_shapes_and_pose_as_cv2(dtype):
+    p1, p2, K, R, t = scene()
+    E, mask = cv_essential.findEssentialMatIter(p1.astype(dtype), p2.astype(dtype), K)
+    Ecv, maskcv = cv2.findEssentialMat(p1.astype(dtype), p2.astype(dtype), K)
+    assert E.shape == (3, 3) and E.dtype == np.float64
+    assert mask.shape == maskcv.shape and mask.dtype == maskcv.dtype
+    _, Rour, tour, _ = cv2.recoverPose(E, p1, p2, K)
+    angle = np.degrees(np.arccos(np.clip((np.trace(Rour @ R.T) - 1) / 2, -1, 1)))
+    assert angle < 0.5
+    assert np.degrees(np.arccos(np.clip(float(tour.ravel() @ t), -1, 1))) < 3.0
+
+
+def test_bad_input_raises_cv2_error():
+    p1, p2, K, _, _ = scene()
+    with pytest.raises(cv2.error):
+        cv_essential.findEssentialMatIter(p1[:4], p2[:4], K)

@@ -8,8 +8,11 @@
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
 
+#include <cstring>
 #include <string>
+#include <utility>
 
 namespace py = pybind11;
 
@@ -62,21 +65,110 @@ py::array toArray(const cv::Mat& m)
     return std::move(out);
 }
 
-py::tuple findEssentialMatIterCamera(const py::array& points1, const py::array& points2,
-                                     const py::array& cameraMatrix, int method, double prob,
-                                     double threshold, int maxIters)
+/** Runs `call` without the GIL and turns a cv::Exception into cv2.error. */
+template <class Call> void withoutGil(Call call)
 {
-    const cv::Mat p1 = asMat(points1, "points1"), p2 = asMat(points2, "points2");
-    const cv::Mat K = asMat(cameraMatrix, "cameraMatrix");
-    cv::Mat E, mask;
     try {
         py::gil_scoped_release release;
-        E = cv::essential::findEssentialMatIter(p1, p2, K, method, prob, threshold, maxIters, mask);
+        call();
     } catch (const cv::Exception& e) {
         PyErr_SetString(cv2Error().ptr(), e.what());
         throw py::error_already_set();
     }
+}
+
+/** An optional array argument (None: empty). */
+cv::Mat optionalMat(const py::object& o, const char* name)
+{
+    if (o.is_none()) return cv::Mat();
+    return asMat(py::array::ensure(o), name);
+}
+
+/** (retval, mask) as cv2 returns them: E (or an empty array) and the mask, None when not written.
+ */
+py::tuple essentialResult(const cv::Mat& E, const cv::Mat& mask)
+{
     return py::make_tuple(toArray(E), mask.empty() ? py::object(py::none()) : toArray(mask));
+}
+
+py::tuple findCamera(const py::array& points1, const py::array& points2,
+                     const py::array& cameraMatrix, int method, double prob, double threshold,
+                     int maxIters, const py::object& maskIn)
+{
+    const cv::Mat p1 = asMat(points1, "points1"), p2 = asMat(points2, "points2");
+    const cv::Mat K = asMat(cameraMatrix, "cameraMatrix");
+    cv::Mat E, mask = optionalMat(maskIn, "mask").clone();
+    withoutGil([&] {
+        E = cv::essential::findEssentialMatIter(p1, p2, K, method, prob, threshold, maxIters, mask);
+    });
+    return essentialResult(E, mask);
+}
+
+py::tuple findFocal(const py::array& points1, const py::array& points2, double focal,
+                    std::pair<double, double> pp, int method, double prob, double threshold,
+                    int maxIters, const py::object& maskIn)
+{
+    const cv::Mat p1 = asMat(points1, "points1"), p2 = asMat(points2, "points2");
+    cv::Mat E, mask = optionalMat(maskIn, "mask").clone();
+    withoutGil([&] {
+        E = cv::essential::findEssentialMatIter(p1, p2, focal, cv::Point2d(pp.first, pp.second),
+                                                method, prob, threshold, maxIters, mask);
+    });
+    return essentialResult(E, mask);
+}
+
+py::tuple findTwoCameras(const py::array& points1, const py::array& points2,
+                         const py::array& cameraMatrix1, const py::object& distCoeffs1,
+                         const py::array& cameraMatrix2, const py::object& distCoeffs2, int method,
+                         double prob, double threshold, const py::object& maskIn)
+{
+    const cv::Mat p1 = asMat(points1, "points1"), p2 = asMat(points2, "points2");
+    const cv::Mat K1 = asMat(cameraMatrix1, "cameraMatrix1");
+    const cv::Mat K2 = asMat(cameraMatrix2, "cameraMatrix2");
+    const cv::Mat d1 = optionalMat(distCoeffs1, "distCoeffs1");
+    const cv::Mat d2 = optionalMat(distCoeffs2, "distCoeffs2");
+    cv::Mat E, mask = optionalMat(maskIn, "mask").clone();
+    withoutGil([&] {
+        E = cv::essential::findEssentialMatIter(p1, p2, K1, d1, K2, d2, method, prob, threshold,
+                                                mask);
+    });
+    return essentialResult(E, mask);
+}
+
+/** cv2.UsacParams (or any object with its attributes) as cv::UsacParams. */
+cv::UsacParams usacParamsOf(const py::object& o)
+{
+    cv::UsacParams u;
+    u.confidence = o.attr("confidence").cast<double>();
+    u.isParallel = o.attr("isParallel").cast<bool>();
+    u.loIterations = o.attr("loIterations").cast<int>();
+    u.loMethod = static_cast<cv::LocalOptimMethod>(o.attr("loMethod").cast<int>());
+    u.loSampleSize = o.attr("loSampleSize").cast<int>();
+    u.maxIterations = o.attr("maxIterations").cast<int>();
+    u.neighborsSearch =
+        static_cast<cv::NeighborSearchMethod>(o.attr("neighborsSearch").cast<int>());
+    u.randomGeneratorState = o.attr("randomGeneratorState").cast<int>();
+    u.sampler = static_cast<cv::SamplingMethod>(o.attr("sampler").cast<int>());
+    u.score = static_cast<cv::ScoreMethod>(o.attr("score").cast<int>());
+    u.threshold = o.attr("threshold").cast<double>();
+    return u;
+}
+
+py::tuple findUsac(const py::array& points1, const py::array& points2,
+                   const py::array& cameraMatrix1, const py::array& cameraMatrix2,
+                   const py::object& distCoeffs1, const py::object& distCoeffs2,
+                   const py::object& params, const py::object& maskIn)
+{
+    const cv::Mat p1 = asMat(points1, "points1"), p2 = asMat(points2, "points2");
+    const cv::Mat K1 = asMat(cameraMatrix1, "cameraMatrix1");
+    const cv::Mat K2 = asMat(cameraMatrix2, "cameraMatrix2");
+    const cv::Mat d1 = optionalMat(distCoeffs1, "dist_coeff1");
+    const cv::Mat d2 = optionalMat(distCoeffs2, "dist_coeff2");
+    const cv::UsacParams usac = usacParamsOf(params);
+    cv::Mat E, mask = optionalMat(maskIn, "mask").clone();
+    withoutGil(
+        [&] { E = cv::essential::findEssentialMatIter(p1, p2, K1, K2, d1, d2, mask, usac); });
+    return essentialResult(E, mask);
 }
 
 } // namespace
@@ -85,10 +177,28 @@ PYBIND11_MODULE(cv_essential, m)
 {
     m.doc() = "opencv_essential: essential-matrix estimation with iterative minimal-set solvers, "
               "a drop-in for cv2.findEssentialMat (work in progress)";
-    m.def("findEssentialMatIter", &findEssentialMatIterCamera, py::arg("points1"),
-          py::arg("points2"), py::arg("cameraMatrix"),
-          py::arg("method") = static_cast<int>(cv::RANSAC), py::arg("prob") = 0.999,
-          py::arg("threshold") = 1.0, py::arg("maxIters") = 1000,
+    const int ransac = static_cast<int>(cv::RANSAC);
+    // The forms in cv2's order; pybind11 tries them in turn, as cv2's dispatcher does.
+    m.def("findEssentialMatIter", &findCamera, py::arg("points1"), py::arg("points2"),
+          py::arg("cameraMatrix"), py::arg("method") = ransac, py::arg("prob") = 0.999,
+          py::arg("threshold") = 1.0, py::arg("maxIters") = 1000, py::arg("mask") = py::none(),
           "findEssentialMatIter(points1, points2, cameraMatrix[, method[, prob[, threshold[, "
-          "maxIters]]]]) -> retval, mask\n\nAs cv2.findEssentialMat (camera-matrix form).");
+          "maxIters[, mask]]]]]) -> retval, mask");
+    m.def("findEssentialMatIter", &findFocal, py::arg("points1"), py::arg("points2"),
+          py::arg("focal") = 1.0, py::arg("pp") = std::make_pair(0.0, 0.0),
+          py::arg("method") = ransac, py::arg("prob") = 0.999, py::arg("threshold") = 1.0,
+          py::arg("maxIters") = 1000, py::arg("mask") = py::none(),
+          "findEssentialMatIter(points1, points2[, focal[, pp[, method[, prob[, threshold[, "
+          "maxIters[, mask]]]]]]]) -> retval, mask");
+    m.def("findEssentialMatIter", &findTwoCameras, py::arg("points1"), py::arg("points2"),
+          py::arg("cameraMatrix1"), py::arg("distCoeffs1"), py::arg("cameraMatrix2"),
+          py::arg("distCoeffs2"), py::arg("method") = ransac, py::arg("prob") = 0.999,
+          py::arg("threshold") = 1.0, py::arg("mask") = py::none(),
+          "findEssentialMatIter(points1, points2, cameraMatrix1, distCoeffs1, cameraMatrix2, "
+          "distCoeffs2[, method[, prob[, threshold[, mask]]]]) -> retval, mask");
+    m.def("findEssentialMatIter", &findUsac, py::arg("points1"), py::arg("points2"),
+          py::arg("cameraMatrix1"), py::arg("cameraMatrix2"), py::arg("dist_coeff1"),
+          py::arg("dist_coeff2"), py::arg("params"), py::arg("mask") = py::none(),
+          "findEssentialMatIter(points1, points2, cameraMatrix1, cameraMatrix2, dist_coeff1, "
+          "dist_coeff2, params[, mask]) -> retval, mask");
 }

@@ -39,3 +39,48 @@ def test_bad_input_raises_cv2_error():
     p1, p2, K, _, _ = scene()
     with pytest.raises(cv2.error):
         cv_essential.findEssentialMatIter(p1[:4], p2[:4], K)
+
+
+def pose_error(E, p1, p2, K, R, t):
+    _, Rour, tour, _ = cv2.recoverPose(E[:3], p1, p2, K)
+    angle = np.degrees(np.arccos(np.clip((np.trace(Rour @ R.T) - 1) / 2, -1, 1)))
+    return angle, np.degrees(np.arccos(np.clip(float(tour.ravel() @ t), -1, 1)))
+
+
+def test_focal_form_as_cv2():
+    p1, p2, K, R, t = scene()
+    E, mask = cv_essential.findEssentialMatIter(p1, p2, focal=500.0, pp=(320.0, 240.0))
+    Ecv, maskcv = cv2.findEssentialMat(p1, p2, focal=500.0, pp=(320.0, 240.0))
+    assert E.shape == Ecv.shape and mask.shape == maskcv.shape and mask.dtype == maskcv.dtype
+    r, tt = pose_error(E, p1, p2, K, R, t)
+    assert r < 0.5 and tt < 3.0
+
+
+def test_two_camera_form_as_cv2():
+    p1, p2, K, R, t = scene()
+    E, mask = cv_essential.findEssentialMatIter(p1, p2, K, None, K, None)
+    Ecv, maskcv = cv2.findEssentialMat(p1, p2, K, None, K, None)
+    assert E.shape == Ecv.shape and mask.shape == maskcv.shape and mask.dtype == maskcv.dtype
+    r, tt = pose_error(E, p1, p2, K, R, t)
+    assert r < 0.5 and tt < 3.0
+
+
+def test_usac_params_form_takes_cv2_object():
+    p1, p2, K, R, t = scene()
+    params = cv2.UsacParams()
+    params.threshold = 1.0
+    params.confidence = 0.999
+    params.maxIterations = 1000
+    E, mask = cv_essential.findEssentialMatIter(p1, p2, K, K, None, None, params)
+    Ecv, maskcv = cv2.findEssentialMat(p1, p2, K, K, None, None, params)
+    assert E.shape == Ecv.shape and mask.shape == maskcv.shape and mask.dtype == maskcv.dtype
+    r, tt = pose_error(E, p1, p2, K, R, t)
+    assert r < 0.5 and tt < 3.0
+
+
+def test_keyword_names_as_cv2():
+    p1, p2, K, _, _ = scene()
+    E, mask = cv_essential.findEssentialMatIter(points1=p1, points2=p2, cameraMatrix=K,
+                                                method=cv2.RANSAC, prob=0.99, threshold=2.0,
+                                                maxIters=500)
+    assert E.shape == (3, 3) and mask.shape == (len(p1), 1)

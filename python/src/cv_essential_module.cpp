@@ -171,6 +171,74 @@ py::tuple findUsac(const py::array& points1, const py::array& points2,
     return essentialResult(E, mask);
 }
 
+// recoverPose. cv2 returns R and t (and E, the triangulated points) as new arrays; the output
+// arguments it accepts (R, t, E, triangulatedPoints) are taken and ignored, as their values are.
+
+py::tuple poseFromCamera(const py::array& E, const py::array& points1, const py::array& points2,
+                         const py::array& cameraMatrix, const py::object&, const py::object&,
+                         const py::object& maskIn)
+{
+    const cv::Mat e = asMat(E, "E"), p1 = asMat(points1, "points1");
+    const cv::Mat p2 = asMat(points2, "points2"), K = asMat(cameraMatrix, "cameraMatrix");
+    cv::Mat R, t, mask = optionalMat(maskIn, "mask").clone();
+    int inFront = 0;
+    withoutGil([&] { inFront = cv::essential::recoverPose(e, p1, p2, K, R, t, mask); });
+    return py::make_tuple(inFront, toArray(R), toArray(t),
+                          mask.empty() ? py::object(py::none()) : toArray(mask));
+}
+
+py::tuple poseFromFocal(const py::array& E, const py::array& points1, const py::array& points2,
+                        const py::object&, const py::object&, double focal,
+                        std::pair<double, double> pp, const py::object& maskIn)
+{
+    const cv::Mat e = asMat(E, "E"), p1 = asMat(points1, "points1");
+    const cv::Mat p2 = asMat(points2, "points2");
+    cv::Mat R, t, mask = optionalMat(maskIn, "mask").clone();
+    int inFront = 0;
+    withoutGil([&] {
+        inFront = cv::essential::recoverPose(e, p1, p2, R, t, focal,
+                                             cv::Point2d(pp.first, pp.second), mask);
+    });
+    return py::make_tuple(inFront, toArray(R), toArray(t),
+                          mask.empty() ? py::object(py::none()) : toArray(mask));
+}
+
+py::tuple poseWithDistance(const py::array& E, const py::array& points1, const py::array& points2,
+                           const py::array& cameraMatrix, double distanceThresh, const py::object&,
+                           const py::object&, const py::object& maskIn, const py::object&)
+{
+    const cv::Mat e = asMat(E, "E"), p1 = asMat(points1, "points1");
+    const cv::Mat p2 = asMat(points2, "points2"), K = asMat(cameraMatrix, "cameraMatrix");
+    cv::Mat R, t, points, mask = optionalMat(maskIn, "mask").clone();
+    int inFront = 0;
+    withoutGil([&] {
+        inFront = cv::essential::recoverPose(e, p1, p2, K, R, t, distanceThresh, mask, points);
+    });
+    return py::make_tuple(inFront, toArray(R), toArray(t),
+                          mask.empty() ? py::object(py::none()) : toArray(mask), toArray(points));
+}
+
+py::tuple poseFromTwoCameras(const py::array& points1, const py::array& points2,
+                             const py::array& cameraMatrix1, const py::object& distCoeffs1,
+                             const py::array& cameraMatrix2, const py::object& distCoeffs2,
+                             const py::object&, const py::object&, const py::object&, int method,
+                             double prob, double threshold, const py::object& maskIn)
+{
+    const cv::Mat p1 = asMat(points1, "points1"), p2 = asMat(points2, "points2");
+    const cv::Mat K1 = asMat(cameraMatrix1, "cameraMatrix1");
+    const cv::Mat K2 = asMat(cameraMatrix2, "cameraMatrix2");
+    const cv::Mat d1 = optionalMat(distCoeffs1, "distCoeffs1");
+    const cv::Mat d2 = optionalMat(distCoeffs2, "distCoeffs2");
+    cv::Mat E, R, t, mask = optionalMat(maskIn, "mask").clone();
+    int inFront = 0;
+    withoutGil([&] {
+        inFront = cv::essential::recoverPose(p1, p2, K1, d1, K2, d2, E, R, t, method, prob,
+                                             threshold, mask);
+    });
+    return py::make_tuple(inFront, toArray(E), toArray(R), toArray(t),
+                          mask.empty() ? py::object(py::none()) : toArray(mask));
+}
+
 } // namespace
 
 PYBIND11_MODULE(cv_essential, m)
@@ -201,4 +269,28 @@ PYBIND11_MODULE(cv_essential, m)
           py::arg("dist_coeff2"), py::arg("params"), py::arg("mask") = py::none(),
           "findEssentialMatIter(points1, points2, cameraMatrix1, cameraMatrix2, dist_coeff1, "
           "dist_coeff2, params[, mask]) -> retval, mask");
+    // recoverPose in cv2 4.6's dispatch order. As in cv2, a positional fifth argument after the
+    // camera matrix is the (ignored) output R, so distanceThresh must be given by keyword.
+    m.def("recoverPose", &poseFromTwoCameras, py::arg("points1"), py::arg("points2"),
+          py::arg("cameraMatrix1"), py::arg("distCoeffs1"), py::arg("cameraMatrix2"),
+          py::arg("distCoeffs2"), py::arg("E") = py::none(), py::arg("R") = py::none(),
+          py::arg("t") = py::none(), py::arg("method") = ransac, py::arg("prob") = 0.999,
+          py::arg("threshold") = 1.0, py::arg("mask") = py::none(),
+          "recoverPose(points1, points2, cameraMatrix1, distCoeffs1, cameraMatrix2, distCoeffs2[, "
+          "E[, R[, t[, method[, prob[, threshold[, mask]]]]]]]) -> retval, E, R, t, mask");
+    m.def("recoverPose", &poseFromCamera, py::arg("E"), py::arg("points1"), py::arg("points2"),
+          py::arg("cameraMatrix"), py::arg("R") = py::none(), py::arg("t") = py::none(),
+          py::arg("mask") = py::none(),
+          "recoverPose(E, points1, points2, cameraMatrix[, R[, t[, mask]]]) -> retval, R, t, mask");
+    m.def("recoverPose", &poseWithDistance, py::arg("E"), py::arg("points1"), py::arg("points2"),
+          py::arg("cameraMatrix"), py::arg("distanceThresh"), py::arg("R") = py::none(),
+          py::arg("t") = py::none(), py::arg("mask") = py::none(),
+          py::arg("triangulatedPoints") = py::none(),
+          "recoverPose(E, points1, points2, cameraMatrix, distanceThresh[, R[, t[, mask[, "
+          "triangulatedPoints]]]]) -> retval, R, t, mask, triangulatedPoints");
+    m.def(
+        "recoverPose", &poseFromFocal, py::arg("E"), py::arg("points1"), py::arg("points2"),
+        py::arg("R") = py::none(), py::arg("t") = py::none(), py::arg("focal") = 1.0,
+        py::arg("pp") = std::make_pair(0.0, 0.0), py::arg("mask") = py::none(),
+        "recoverPose(E, points1, points2[, R[, t[, focal[, pp[, mask]]]]]) -> retval, R, t, mask");
 }

@@ -84,3 +84,34 @@ def test_keyword_names_as_cv2():
                                                 method=cv2.RANSAC, prob=0.99, threshold=2.0,
                                                 maxIters=500)
     assert E.shape == (3, 3) and mask.shape == (len(p1), 1)
+
+
+def rotation_error(Ra, Rb):
+    return np.degrees(np.arccos(np.clip((np.trace(Ra @ Rb.T) - 1) / 2, -1, 1)))
+
+
+def test_recover_pose_forms_as_cv2():
+    p1, p2, K, R, t = scene()
+    E, mask = cv2.findEssentialMat(p1, p2, K)
+    n, Ro, to, mo = cv_essential.recoverPose(E, p1, p2, K)
+    nc, Rc, tc, mc = cv2.recoverPose(E, p1, p2, K)
+    assert Ro.shape == Rc.shape == (3, 3) and to.shape == tc.shape == (3, 1)
+    assert mo.shape == mc.shape and mo.dtype == mc.dtype
+    # Same decomposition and cheirality vote as cv2 (the C++ tests: within 2e-15).
+    assert np.linalg.norm(Ro - Rc) < 1e-9 and abs(n - nc) <= 2
+    # focal / pp
+    n2, R2, t2, _ = cv_essential.recoverPose(E, p1, p2, focal=500.0, pp=(320.0, 240.0))
+    assert np.linalg.norm(R2 - Rc) < 1e-9
+    # distanceThresh with the triangulated points
+    # cv2 reads a positional fifth argument as the output R: distanceThresh goes by keyword.
+    assert len(cv_essential.recoverPose(E, p1, p2, K, 50.0)) == 4
+    assert len(cv2.recoverPose(E, p1, p2, K, 50.0)) == 4
+    out = cv_essential.recoverPose(E, p1, p2, K, distanceThresh=50.0)
+    outc = cv2.recoverPose(E, p1, p2, K, distanceThresh=50.0)
+    assert len(out) == len(outc) == 5
+    assert out[4].shape == outc[4].shape
+    assert np.linalg.norm(out[1] - outc[1]) < 1e-9
+    # two cameras: estimate and pose
+    res = cv_essential.recoverPose(p1, p2, K, None, K, None)
+    assert len(res) == 5
+    assert rotation_error(res[2], R) < 0.5

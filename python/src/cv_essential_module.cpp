@@ -239,6 +239,26 @@ py::tuple poseFromTwoCameras(const py::array& points1, const py::array& points2,
                           mask.empty() ? py::object(py::none()) : toArray(mask));
 }
 
+// The module's own overload: EssentialParams in, (retval, mask, report) out.
+
+py::tuple findWithParams(const py::array& points1, const py::array& points2,
+                         const py::array& cameraMatrix,
+                         const cv::essential::EssentialParams& params, const py::object& maskIn)
+{
+    const cv::Mat p1 = asMat(points1, "points1"), p2 = asMat(points2, "points2");
+    const cv::Mat K = asMat(cameraMatrix, "cameraMatrix");
+    cv::Mat E, mask = optionalMat(maskIn, "mask").clone();
+    cv::essential::EssentialReport report;
+    withoutGil([&] { E = cv::essential::findEssentialMatIter(p1, p2, K, params, mask, &report); });
+    return py::make_tuple(toArray(E), mask.empty() ? py::object(py::none()) : toArray(mask),
+                          report);
+}
+
+py::array matxArray(const cv::Matx33d& m)
+{
+    return toArray(cv::Mat(m));
+}
+
 } // namespace
 
 PYBIND11_MODULE(cv_essential, m)
@@ -293,4 +313,81 @@ PYBIND11_MODULE(cv_essential, m)
         py::arg("R") = py::none(), py::arg("t") = py::none(), py::arg("focal") = 1.0,
         py::arg("pp") = std::make_pair(0.0, 0.0), py::arg("mask") = py::none(),
         "recoverPose(E, points1, points2[, R[, t[, focal[, pp[, mask]]]]]) -> retval, R, t, mask");
+
+    // EssentialParams: keyword construction, every field read/write, a readable repr.
+    py::class_<cv::essential::EssentialParams> params(m, "EssentialParams",
+                                                      "Settings of one estimate (the module's "
+                                                      "own overload); see essential/params.hpp.");
+    params.def(py::init([](const py::kwargs& kwargs) {
+        py::object self = py::cast(cv::essential::EssentialParams());
+        for (const auto& item : kwargs) {
+            const std::string key = item.first.cast<std::string>();
+            if (!py::hasattr(self, key.c_str()) || key.rfind("_", 0) == 0)
+                throw py::type_error("EssentialParams has no field '" + key + "'");
+            self.attr(key.c_str()) = item.second;
+        }
+        return self.cast<cv::essential::EssentialParams>();
+    }));
+    using P = cv::essential::EssentialParams;
+    params.def_readwrite("solver", &P::solver)
+        .def_readwrite("method", &P::method)
+        .def_readwrite("engine", &P::engine)
+        .def_readwrite("timeBudgetMs", &P::timeBudgetMs)
+        .def_readwrite("preemptiveHypotheses", &P::preemptiveHypotheses)
+        .def_readwrite("preemptiveBlockSize", &P::preemptiveBlockSize)
+        .def_readwrite("confidence", &P::confidence)
+        .def_readwrite("threshold", &P::threshold)
+        .def_property(
+            "distance", [](const P& p) { return static_cast<int>(p.distance); },
+            [](P& p, int d) { p.distance = static_cast<cv::essential::EssentialDistance>(d); })
+        .def_readwrite("maxIters", &P::maxIters)
+        .def_readwrite("sampleBudget", &P::sampleBudget)
+        .def_readwrite("budgetLocalSamples", &P::budgetLocalSamples)
+        .def_readwrite("planeParallax", &P::planeParallax)
+        .def_readwrite("loIterations", &P::loIterations)
+        .def_readwrite("loSampleSize", &P::loSampleSize)
+        .def_readwrite("sampler", &P::sampler)
+        .def_readwrite("sprt", &P::sprt)
+        .def_readwrite("seed", &P::seed)
+        .def_readwrite("refine", &P::refine)
+        .def_readwrite("recoverPose", &P::recoverPose)
+        .def("__repr__", [](const P& p) {
+            return cv::format("EssentialParams(solver='%s', method=%d, engine=%d, "
+                              "timeBudgetMs=%g, confidence=%g, threshold=%g, maxIters=%d, "
+                              "sampleBudget=%d, budgetLocalSamples=%s, planeParallax=%s, "
+                              "loIterations=%d, sampler=%d, sprt=%s, refine=%s)",
+                              p.solver.c_str(), p.method, p.engine, p.timeBudgetMs, p.confidence,
+                              p.threshold, p.maxIters, p.sampleBudget,
+                              p.budgetLocalSamples ? "True" : "False",
+                              p.planeParallax ? "True" : "False", p.loIterations, p.sampler,
+                              p.sprt ? "True" : "False", p.refine ? "True" : "False");
+        });
+
+    using Rep = cv::essential::EssentialReport;
+    py::class_<Rep>(m, "EssentialReport", "What one estimate did: the pose, counts and times.")
+        .def_readonly("success", &Rep::success)
+        .def_property_readonly("E", [](const Rep& r) { return matxArray(r.E); })
+        .def_property_readonly("R", [](const Rep& r) { return matxArray(r.R); })
+        .def_property_readonly("t", [](const Rep& r) { return toArray(cv::Mat(r.t)); })
+        .def_readonly("poseRecovered", &Rep::poseRecovered)
+        .def_readonly("pointsInFront", &Rep::pointsInFront)
+        .def_readonly("degenerate", &Rep::degenerate)
+        .def_readonly("numPoints", &Rep::numPoints)
+        .def_readonly("inliers", &Rep::inliers)
+        .def_readonly("iterations", &Rep::iterations)
+        .def_readonly("hypothesesGenerated", &Rep::hypothesesGenerated)
+        .def_readonly("planeParallaxKept", &Rep::planeParallaxKept)
+        .def_readonly("timeTotalMs", &Rep::timeTotalMs)
+        .def("__repr__", [](const Rep& r) {
+            return cv::format("EssentialReport(success=%s, inliers=%d of %d, iterations=%d, "
+                              "timeTotalMs=%.3f)",
+                              r.success ? "True" : "False", r.inliers, r.numPoints, r.iterations,
+                              r.timeTotalMs);
+        });
+
+    m.def("findEssentialMatIter", &findWithParams, py::arg("points1"), py::arg("points2"),
+          py::arg("cameraMatrix"), py::arg("params"), py::arg("mask") = py::none(),
+          "findEssentialMatIter(points1, points2, cameraMatrix, params[, mask]) -> retval, mask, "
+          "report\n\nThe module's own form: EssentialParams in, an EssentialReport out.");
+    m.def("listSolvers", &cv::essential::listSolvers, "listSolvers() -> list of solver names");
 }

@@ -115,3 +115,19 @@ def test_recover_pose_forms_as_cv2():
     res = cv_essential.recoverPose(p1, p2, K, None, K, None)
     assert len(res) == 5
     assert rotation_error(res[2], R) < 0.5
+
+
+def test_module_params_report_and_solvers():
+    p1, p2, K, R, t = scene()
+    params = cv_essential.EssentialParams(solver="nister", threshold=1.5, planeParallax=False)
+    assert params.solver == "nister" and params.threshold == 1.5 and not params.planeParallax
+    assert "solver='nister'" in repr(params)
+    with pytest.raises(TypeError):
+        cv_essential.EssentialParams(no_such_field=1)
+    E, mask, report = cv_essential.findEssentialMatIter(p1, p2, K, params)
+    assert report.success and report.poseRecovered and report.inliers == int(mask.sum())
+    assert rotation_error(report.R, R) < 0.5
+    assert report.t.shape == (3, 1)
+    assert {"gn", "lm", "nister", "robust"} <= set(cv_essential.listSolvers())
+    with pytest.raises(cv2.error):
+        cv_essential.findEssentialMatIter(p1, p2, K, cv_essential.EssentialParams(solver="nope"))

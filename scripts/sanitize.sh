@@ -26,7 +26,8 @@ export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1"
 # would compile OpenCV's test framework again, and the sanitizers would judge OpenCV's code.
 if [[ ! -f "$build_dir/CMakeCache.txt" ]]; then
     cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=Debug -DESSENTIAL_BUILD_FUZZ=ON \
-        -DESSENTIAL_BUILD_PERF=OFF -DESSENTIAL_BUILD_BENCH=OFF -DESSENTIAL_OPENCV_OWN_TESTS=OFF >/dev/null
+        -DESSENTIAL_BUILD_PERF=OFF -DESSENTIAL_BUILD_BENCH=OFF -DESSENTIAL_OPENCV_OWN_TESTS=OFF \
+        -DESSENTIAL_BUILD_PYTHON=OFF >/dev/null
 fi
 cmake --build "$build_dir" -j"${JOBS:-$(nproc)}"
 

@@ -131,3 +131,34 @@ def test_module_params_report_and_solvers():
     assert {"gn", "lm", "nister", "robust"} <= set(cv_essential.listSolvers())
     with pytest.raises(cv2.error):
         cv_essential.findEssentialMatIter(p1, p2, K, cv_essential.EssentialParams(solver="nope"))
+
+
+def test_estimate_releases_the_gil():
+    # While an estimate with a 500 ms budget runs in one thread, the main thread finishes a short
+    # loop long before the estimate ends. With the GIL held during the call, the main thread could
+    # not run until the call returned. (An ordering with a margin of hundreds of milliseconds, not
+    # a speed measurement.)
+    import threading
+    import time
+
+    rng = np.random.default_rng(5)
+    p1 = rng.uniform(0, 640, (2000, 2))
+    p2 = rng.uniform(0, 480, (2000, 2))  # no geometry: the search runs its whole time budget
+    K = np.array([[500.0, 0, 320], [0, 500, 240], [0, 0, 1]])
+    params = cv_essential.EssentialParams(timeBudgetMs=500.0, confidence=1 - 1e-12,
+                                          maxIters=100000000)
+    ended = {}
+
+    def estimate():
+        cv_essential.findEssentialMatIter(p1, p2, K, params)
+        ended["estimate"] = time.perf_counter()
+
+    thread = threading.Thread(target=estimate)
+    thread.start()
+    time.sleep(0.05)  # let the estimate start (sleeping releases the GIL)
+    total = 0
+    for i in range(10000):
+        total += i
+    ended["main"] = time.perf_counter()
+    thread.join()
+    assert ended["main"] < ended["estimate"] - 0.2

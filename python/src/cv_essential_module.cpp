@@ -259,6 +259,78 @@ py::array matxArray(const cv::Matx33d& m)
     return toArray(cv::Mat(m));
 }
 
+/** A solver written in Python: `function(x1, x2)` takes two (m, 2) float64 arrays of normalised
+points and returns a sequence of 3 x 3 essential matrices. solve() takes the GIL for the call only,
+so other estimates keep running. Python exceptions become std::runtime_error, which the module's
+solver guard turns into a cv::Exception naming the solver. */
+class PythonSolver : public cv::essential::EssentialSolver
+{
+public:
+    PythonSolver(const py::object* function, int sampleSize, int maxSolutions, double successRate)
+        : function_(function), m_(sampleSize), k_(maxSolutions), rate_(successRate)
+    {
+    }
+    int sampleSize() const override { return m_; }
+    int maxSolutions() const override { return k_; }
+    double successRate() const override { return rate_; }
+    int solve(const cv::Point2d* x1, const cv::Point2d* x2, cv::RNG&,
+              cv::Matx33d* solutions) override
+    {
+        py::gil_scoped_acquire gil;
+        try {
+            py::array_t<double> a({m_, 2}), b({m_, 2});
+            auto pa = a.mutable_unchecked<2>();
+            auto pb = b.mutable_unchecked<2>();
+            for (int i = 0; i < m_; ++i) {
+                pa(i, 0) = x1[i].x;
+                pa(i, 1) = x1[i].y;
+                pb(i, 0) = x2[i].x;
+                pb(i, 1) = x2[i].y;
+            }
+            const py::object result = (*function_)(a, b);
+            int n = 0;
+            for (const py::handle item : result) {
+                if (n >= k_) break;
+                const auto e =
+                    py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(item);
+                if (!e || e.size() != 9)
+                    throw std::runtime_error("a solution is not a 3 x 3 array");
+                for (int k = 0; k < 9; ++k)
+                    solutions[n].val[k] = e.data()[k];
+                ++n;
+            }
+            return n;
+        } catch (py::error_already_set& e) {
+            throw std::runtime_error(e.what());
+        }
+    }
+
+private:
+    const py::object* function_;
+    int m_, k_;
+    double rate_;
+};
+
+void registerPythonSolver(const std::string& name, const py::function& function, int sampleSize,
+                          int maxSolutions, double successRate)
+{
+    if (sampleSize < 5 || maxSolutions < 1 || !(successRate > 0 && successRate <= 1))
+        throw py::value_error("registerSolver: sampleSize must be >= 5, maxSolutions >= 1 and "
+                              "successRate in (0, 1]");
+    // Kept alive for the life of the process: the registry may make solvers from it on any thread,
+    // without the GIL, until the interpreter exits, so its reference is never released.
+    const py::object* held = new py::object(function);
+    try {
+        cv::essential::registerSolver(name, [held, sampleSize, maxSolutions, successRate]() {
+            return cv::Ptr<cv::essential::EssentialSolver>(
+                new PythonSolver(held, sampleSize, maxSolutions, successRate));
+        });
+    } catch (const cv::Exception& e) {
+        PyErr_SetString(cv2Error().ptr(), e.what());
+        throw py::error_already_set();
+    }
+}
+
 } // namespace
 
 PYBIND11_MODULE(cv_essential, m)
@@ -390,4 +462,10 @@ PYBIND11_MODULE(cv_essential, m)
           "findEssentialMatIter(points1, points2, cameraMatrix, params[, mask]) -> retval, mask, "
           "report\n\nThe module's own form: EssentialParams in, an EssentialReport out.");
     m.def("listSolvers", &cv::essential::listSolvers, "listSolvers() -> list of solver names");
+    m.def("registerSolver", &registerPythonSolver, py::arg("name"), py::arg("solver"),
+          py::arg("sampleSize") = 5, py::arg("maxSolutions") = 10, py::arg("successRate") = 1.0,
+          "registerSolver(name, solver[, sampleSize[, maxSolutions[, successRate]]]) -> None\n\n"
+          "Registers a Python solver: solver(x1, x2) takes two (sampleSize, 2) arrays of "
+          "normalised points and returns a list of 3 x 3 essential matrices. Slow (a Python call "
+          "per sample) but usable in every form with EssentialParams(solver=name).");
 }

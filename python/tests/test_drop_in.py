@@ -162,3 +162,30 @@ def test_estimate_releases_the_gil():
     ended["main"] = time.perf_counter()
     thread.join()
     assert ended["main"] < ended["estimate"] - 0.2
+
+
+def five_point_with_cv2(x1, x2):
+    # cv2 returns every solution of exactly five points stacked into a (3k, 3) array.
+    E, _ = cv2.findEssentialMat(x1, x2, np.eye(3), cv2.RANSAC, 0.999, 1e-3)
+    if E is None:
+        return []
+    return [E[3 * i:3 * i + 3] for i in range(E.shape[0] // 3)]
+
+
+def test_python_registered_solver():
+    cv_essential.registerSolver("py_cv2_five_point", five_point_with_cv2)
+    assert "py_cv2_five_point" in cv_essential.listSolvers()
+    p1, p2, K, R, t = scene(n=100)
+    params = cv_essential.EssentialParams(solver="py_cv2_five_point", maxIters=200)
+    E, mask, report = cv_essential.findEssentialMatIter(p1, p2, K, params)
+    assert report.success and rotation_error(report.R, R) < 0.5
+
+
+def test_python_solver_exception_becomes_cv2_error():
+    def broken(x1, x2):
+        raise RuntimeError("this solver is broken")
+
+    cv_essential.registerSolver("py_broken", broken)
+    p1, p2, K, _, _ = scene(n=50)
+    with pytest.raises(cv2.error, match="py_broken|broken"):
+        cv_essential.findEssentialMatIter(p1, p2, K, cv_essential.EssentialParams(solver="py_broken"))

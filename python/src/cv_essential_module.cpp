@@ -6,6 +6,7 @@
 
 #include <opencv2/essential.hpp>
 
+#include <pybind11/functional.h>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -331,6 +332,65 @@ void registerPythonSolver(const std::string& name, const py::function& function,
     }
 }
 
+/** findEssentialMatBatch: `pairs` a sequence of (points1, points2, cameraMatrix); runs without
+the GIL. `progress`: None, a callable(done, total) (called with the GIL), or True for a tqdm bar
+when python3-tqdm is installed and stderr is a terminal (nothing otherwise). */
+std::vector<cv::essential::EssentialPairResult> findBatch(const py::sequence& pairs,
+                                                          const py::object& paramsIn, int threads,
+                                                          const py::object& progress)
+{
+    std::vector<cv::essential::EssentialPair> input;
+    input.reserve(pairs.size());
+    for (const py::handle item : pairs) {
+        const py::tuple t = py::reinterpret_borrow<py::object>(item).cast<py::tuple>();
+        if (t.size() != 3)
+            throw py::value_error("findEssentialMatBatch: each pair is (points1, points2, "
+                                  "cameraMatrix)");
+        cv::essential::EssentialPair p;
+        // Copies: the workers read them without the GIL, whatever Python does with the arrays.
+        p.points1 = asMat(py::array::ensure(t[0]), "points1").clone();
+        p.points2 = asMat(py::array::ensure(t[1]), "points2").clone();
+        p.cameraMatrix = asMat(py::array::ensure(t[2]), "cameraMatrix").clone();
+        input.push_back(p);
+    }
+    const cv::essential::EssentialParams params =
+        paramsIn.is_none() ? cv::essential::EssentialParams()
+                           : paramsIn.cast<cv::essential::EssentialParams>();
+    py::object callback = py::none();
+    py::object bar = py::none();
+    if (progress.is(py::bool_(true))) {
+        const bool tty = py::module_::import("sys").attr("stderr").attr("isatty")().cast<bool>();
+        if (tty) {
+            try {
+                bar = py::module_::import("tqdm").attr("tqdm")(py::arg("total") = input.size(),
+                                                               py::arg("unit") = "pair");
+            } catch (py::error_already_set&) {
+                bar = py::none(); // no tqdm: no bar
+            }
+        }
+    } else if (!progress.is_none() && !progress.is(py::bool_(false))) {
+        callback = progress;
+    }
+    cv::essential::BatchProgress report;
+    if (!callback.is_none() || !bar.is_none())
+        report = [&](int done, int total) {
+            py::gil_scoped_acquire gil;
+            if (!bar.is_none()) bar.attr("update")(1);
+            if (!callback.is_none()) callback(done, total);
+        };
+    std::vector<cv::essential::EssentialPairResult> results;
+    try {
+        py::gil_scoped_release release;
+        results = cv::essential::findEssentialMatBatch(input, params, threads, report);
+    } catch (const cv::Exception& e) {
+        if (!bar.is_none()) bar.attr("close")();
+        PyErr_SetString(cv2Error().ptr(), e.what());
+        throw py::error_already_set();
+    }
+    if (!bar.is_none()) bar.attr("close")();
+    return results;
+}
+
 } // namespace
 
 PYBIND11_MODULE(cv_essential, m)
@@ -468,4 +528,23 @@ PYBIND11_MODULE(cv_essential, m)
           "Registers a Python solver: solver(x1, x2) takes two (sampleSize, 2) arrays of "
           "normalised points and returns a list of 3 x 3 essential matrices. Slow (a Python call "
           "per sample) but usable in every form with EssentialParams(solver=name).");
+    using BR = cv::essential::EssentialPairResult;
+    py::class_<BR>(m, "EssentialPairResult", "The estimate of one pair of a batch.")
+        .def_property_readonly("E", [](const BR& r) { return toArray(r.E); })
+        .def_property_readonly("mask", [](const BR& r) { return toArray(r.mask); })
+        .def_readonly("report", &BR::report)
+        .def_readonly("error", &BR::error)
+        .def("__repr__", [](const BR& r) {
+            return r.error.empty() ? cv::format("EssentialPairResult(inliers=%d of %d)",
+                                                r.report.inliers, r.report.numPoints)
+                                   : "EssentialPairResult(error=" + r.error + ")";
+        });
+    m.def("findEssentialMatBatch", &findBatch, py::arg("pairs"), py::arg("params") = py::none(),
+          py::arg("threads") = 0, py::arg("progress") = py::none(),
+          "findEssentialMatBatch(pairs[, params[, threads[, progress]]]) -> list of "
+          "EssentialPairResult\n\npairs: (points1, points2, cameraMatrix) tuples, estimated in "
+          "parallel without the GIL; pair i uses the seed batchPairSeed(params.seed, i), so the "
+          "results do not depend on the thread count. progress: a callable(done, total), or True "
+          "for a tqdm bar on a terminal.");
+    m.def("batchPairSeed", &cv::essential::batchPairSeed, py::arg("seed"), py::arg("index"));
 }

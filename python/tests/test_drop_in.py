@@ -189,3 +189,25 @@ def test_python_solver_exception_becomes_cv2_error():
     p1, p2, K, _, _ = scene(n=50)
     with pytest.raises(cv2.error, match="py_broken|broken"):
         cv_essential.findEssentialMatIter(p1, p2, K, cv_essential.EssentialParams(solver="py_broken"))
+
+
+def test_batch_is_deterministic_and_reports_bad_pairs():
+    pairs = []
+    for i in range(6):
+        p1, p2, K, _, _ = scene(n=150, seed=10 + i)
+        pairs.append((p1, p2, K))
+    pairs.append((pairs[0][0], pairs[0][1][:10], pairs[0][2]))  # sizes differ: bad pair
+    seen = []
+    one = cv_essential.findEssentialMatBatch(pairs, threads=1)
+    two = cv_essential.findEssentialMatBatch(pairs, threads=2,
+                                             progress=lambda done, total: seen.append((done, total)))
+    assert len(one) == len(two) == 7
+    for a, b in zip(one[:6], two[:6]):
+        assert a.error == "" and np.array_equal(a.E, b.E) and np.array_equal(a.mask, b.mask)
+    assert one[6].error != "" and two[6].error != ""
+    assert sorted(seen) == [(k, 7) for k in range(1, 8)]
+    # Pair 3 alone, with its derived seed, gives the same E.
+    params = cv_essential.EssentialParams(seed=cv_essential.batchPairSeed(
+        cv_essential.EssentialParams().seed, 3))
+    E, _, _ = cv_essential.findEssentialMatIter(*pairs[3], params)
+    assert np.array_equal(E, one[3].E)

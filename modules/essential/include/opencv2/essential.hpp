@@ -7,6 +7,7 @@
 #include <opencv2/calib3d.hpp>
 #include <opencv2/core.hpp>
 
+#include "opencv2/essential/batch.hpp"
 #include "opencv2/essential/params.hpp"
 #include "opencv2/essential/solver.hpp"
 

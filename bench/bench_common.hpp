@@ -1,14 +1,15 @@
 // This file is part of opencv_essential, licensed under the Apache License, Version 2.0.
 // See the LICENSE file at the top of the source tree.
 
-// Small helpers the experiment programs share: comma-separated option values and order
-// statistics of timings.
+// Small helpers the experiment programs share: comma-separated option values, order statistics
+// of timings and the thread CPU clock.
 
 #ifndef OPENCV_ESSENTIAL_BENCH_COMMON_HPP
 #define OPENCV_ESSENTIAL_BENCH_COMMON_HPP
 
 #include <algorithm>
 #include <cstdlib>
+#include <ctime>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -47,6 +48,15 @@ inline double percentile(std::vector<double> v, double p)
 inline double median(const std::vector<double>& v)
 {
     return percentile(v, 0.5);
+}
+
+/** Thread CPU time in milliseconds (CLOCK_THREAD_CPUTIME_ID): on a shared machine the time the
+thread waits for a core is not charged to it, which wall time would add at random. */
+inline double threadCpuMs()
+{
+    timespec ts{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return ts.tv_sec * 1e3 + ts.tv_nsec * 1e-6;
 }
 
 } // namespace essential_bench

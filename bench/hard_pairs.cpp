@@ -11,6 +11,7 @@
 //
 //   essential_hard_pairs [--sets LIST] [--methods LIST] [--csv FILE] [--md FILE] ...  (kUsage)
 
+#include "bench_common.hpp"
 #include "cli_common.hpp"
 #include "frontend/frontend.hpp"
 #include "frontend/sequence_io.hpp"
@@ -343,6 +344,22 @@ essential_samples::Matches pairMatches(const std::string& cachePath, Features fe
     return all;
 }
 
+/** `base` (pose, camera, name) with the first 20% of the matches of `m` in `order` (rounded up). */
+Problem railSubset(const Problem& base, const char* set, const essential_samples::Matches& m,
+                   std::vector<int> order)
+{
+    order.resize(static_cast<size_t>(std::ceil(0.2 * order.size())));
+    Problem p = base;
+    p.set = set;
+    for (int k : order) {
+        p.p1.push_back(m.points1[k]);
+        p.p2.push_back(m.points2[k]);
+        p.distance.push_back(m.distances[k]);
+    }
+    p.trueInlierRate = trueInlierRate(p);
+    return p;
+}
+
 /** rail-random20 and rail-all problems (both from one matching of each pair). */
 void railProblems(const Options& o, bool random20, bool all, bool best20,
                   std::vector<Problem>& outRandom, std::vector<Problem>& outAll,
@@ -416,16 +433,7 @@ void railProblems(const Options& o, bool random20, bool all, bool best20,
                     std::iota(order.begin(), order.end(), 0);
                     std::stable_sort(order.begin(), order.end(),
                                      [&](int a, int b) { return m.distances[a] < m.distances[b]; });
-                    order.resize(static_cast<size_t>(std::ceil(0.2 * order.size())));
-                    Problem p = base;
-                    p.set = "rail-best20";
-                    for (int k : order) {
-                        p.p1.push_back(m.points1[k]);
-                        p.p2.push_back(m.points2[k]);
-                        p.distance.push_back(m.distances[k]);
-                    }
-                    p.trueInlierRate = trueInlierRate(p);
-                    outBest.push_back(std::move(p));
+                    outBest.push_back(railSubset(base, "rail-best20", m, order));
                 }
                 if (random20) {
                     // A fixed random 20% per pair (the shuffles then reorder it).
@@ -433,16 +441,7 @@ void railProblems(const Options& o, bool random20, bool all, bool best20,
                     std::iota(order.begin(), order.end(), 0);
                     std::mt19937_64 g(o.seed * 7919ULL + i * 131ULL + j);
                     std::shuffle(order.begin(), order.end(), g);
-                    order.resize(static_cast<size_t>(std::ceil(0.2 * order.size())));
-                    Problem p = base;
-                    p.set = "rail-random20";
-                    for (int k : order) {
-                        p.p1.push_back(m.points1[k]);
-                        p.p2.push_back(m.points2[k]);
-                        p.distance.push_back(m.distances[k]);
-                    }
-                    p.trueInlierRate = trueInlierRate(p);
-                    outRandom.push_back(std::move(p));
+                    outRandom.push_back(railSubset(base, "rail-random20", m, order));
                 }
             }
         }
@@ -528,13 +527,6 @@ struct Outcome
     bool right = false;
 };
 
-double threadCpuMs()
-{
-    timespec ts{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-    return ts.tv_sec * 1e3 + ts.tv_nsec * 1e-6;
-}
-
 Outcome runMethod(const Method& m, const Problem& p, const std::vector<cv::Point2f>& p1,
                   const std::vector<cv::Point2f>& p2, std::uint64_t seed)
 {
@@ -544,7 +536,7 @@ Outcome runMethod(const Method& m, const Problem& p, const std::vector<cv::Point
     cv::Matx33d R;
     cv::Vec3d t;
     cv::essential::EssentialReport report;
-    const double cpu0 = threadCpuMs();
+    const double cpu0 = essential_bench::threadCpuMs();
     const auto wall0 = std::chrono::steady_clock::now();
     try {
         switch (m.kind) {
@@ -576,7 +568,7 @@ Outcome runMethod(const Method& m, const Problem& p, const std::vector<cv::Point
                      e.err.c_str());
         E.release();
     }
-    out.cpuMs = threadCpuMs() - cpu0;
+    out.cpuMs = essential_bench::threadCpuMs() - cpu0;
     out.wallMs =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - wall0).count();
     out.inliers = mask.empty() ? 0 : cv::countNonZero(mask);

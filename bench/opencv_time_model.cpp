@@ -19,17 +19,6 @@
 #include <cstring>
 #include <ctime>
 
-namespace {
-
-double threadCpuMs()
-{
-    timespec ts;
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-    return ts.tv_sec * 1e3 + ts.tv_nsec * 1e-6;
-}
-
-} // namespace
-
 int main(int argc, char** argv)
 {
     int reps = 3;
@@ -56,15 +45,15 @@ int main(int argc, char** argv)
             const essential_test::SyntheticScene s =
                 essential_test::makeScene(cfg, static_cast<uint64_t>(n) * 10 + r);
             cv::Mat mask;
-            double t0 = threadCpuMs();
+            double t0 = essential_bench::threadCpuMs();
             cv::findEssentialMat(s.px1, s.px2, s.K, cv::RANSAC, 0.999, 1.0, 1000, mask);
-            cvMs += threadCpuMs() - t0;
+            cvMs += essential_bench::threadCpuMs() - t0;
             cv::essential::EssentialParams params;
             params.sampleBudget = cv::essential::BUDGET_CONFIDENCE;
             cv::essential::EssentialReport report;
-            t0 = threadCpuMs();
+            t0 = essential_bench::threadCpuMs();
             cv::essential::findEssentialMatIter(s.px1, s.px2, s.K, params, mask, &report);
-            ourMs += threadCpuMs() - t0;
+            ourMs += essential_bench::threadCpuMs() - t0;
             samples += report.iterations;
         }
         const double cvUs = 1000.0 * cvMs / (1000.0 * reps);

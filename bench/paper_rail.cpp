@@ -14,6 +14,7 @@
 //
 //   essential_paper_rail --data DIR --csv OUT.csv [options]   (see kUsage)
 
+#include "bench_common.hpp"
 #include "cli_common.hpp"
 #include "frontend/frontend.hpp"
 #include "frontend/sequence_io.hpp"
@@ -265,16 +266,6 @@ std::vector<int> selectVariant(const essential_samples::Matches& all, bool best,
     return order;
 }
 
-// CPU time of this thread in ms (the estimators are single-threaded): what an estimate really got
-// on a shared machine, where the wall-clock time of a budgeted call includes the time it waited
-// for a core.
-double threadCpuMs()
-{
-    timespec ts{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-    return ts.tv_sec * 1e3 + ts.tv_nsec * 1e-6;
-}
-
 double directionErrorDeg(const cv::Vec3d& t, const cv::Vec3d& truth)
 {
     return essential_samples::directionAngleDeg(t, truth, 180.0);
@@ -398,7 +389,7 @@ int run(int argc, char** argv)
                         params.seed = pairSeed;
                         cv::essential::EssentialReport report;
                         bool posed = false;
-                        const double cpuStart = threadCpuMs();
+                        const double cpuStart = essential_bench::threadCpuMs();
                         const auto start = std::chrono::steady_clock::now();
                         if (n >= 5) {
                             const cv::Mat E = cv::essential::findEssentialMatIter(
@@ -406,7 +397,7 @@ int run(int argc, char** argv)
                             posed = !E.empty() && report.success && report.poseRecovered;
                         }
                         const double ms = elapsedMs(start);
-                        const double cpuMs = threadCpuMs() - cpuStart;
+                        const double cpuMs = essential_bench::threadCpuMs() - cpuStart;
                         estimateMs += ms;
                         writeRow(solver, budget, ms, cpuMs, report.hypothesesGenerated,
                                  report.inliers, posed, report.t, report.R);
@@ -417,7 +408,7 @@ int run(int argc, char** argv)
                     cv::Mat mask, R, t;
                     bool posed = false;
                     int inliers = 0;
-                    const double cpuStart = threadCpuMs();
+                    const double cpuStart = essential_bench::threadCpuMs();
                     const auto start = std::chrono::steady_clock::now();
                     if (n >= 5) {
                         const cv::Mat E = cv::findEssentialMat(p1, p2, K, cv::RANSAC, 0.999,
@@ -429,7 +420,7 @@ int run(int argc, char** argv)
                         inliers = mask.empty() ? 0 : cv::countNonZero(mask);
                     }
                     const double ms = elapsedMs(start);
-                    const double cpuMs = threadCpuMs() - cpuStart;
+                    const double cpuMs = essential_bench::threadCpuMs() - cpuStart;
                     estimateMs += ms;
                     writeRow("opencv", 0, ms, cpuMs, 0, inliers, posed,
                              posed ? cv::Vec3d(t) : cv::Vec3d(),

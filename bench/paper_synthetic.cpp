@@ -232,16 +232,6 @@ double rmsEpipolarDistance(const cv::Matx33d& E, const essential_test::Synthetic
     return count > 0 ? std::sqrt(sum / count) : std::numeric_limits<double>::infinity();
 }
 
-/** CPU time of the calling thread in milliseconds. Every call under test runs on one thread, so
-on an idle machine this equals its wall time; on a shared machine (other jobs on the same cores)
-it leaves out the time the thread waited, which wall time would add at random. */
-double threadCpuMs()
-{
-    timespec ts;
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-    return ts.tv_sec * 1e3 + ts.tv_nsec * 1e-6;
-}
-
 /** One estimate of one problem. */
 struct Outcome
 {
@@ -261,7 +251,7 @@ Outcome estimate(const essential_test::SyntheticScene& s, const Method& m, int b
     cv::Matx33d E, R = cv::Matx33d::eye();
     cv::Vec3d t(0, 0, 0);
     bool found = false, posed = false;
-    const double t0 = threadCpuMs();
+    const double t0 = essential_bench::threadCpuMs();
     if (m.kind == Method::OpenCv) {
         cv::Mat mask, Rm, tm;
         const cv::Mat Em =
@@ -301,7 +291,7 @@ Outcome estimate(const essential_test::SyntheticScene& s, const Method& m, int b
         o.refineMs = report.timeRefineMs;
         o.refineIterations = report.refineIterations;
     }
-    o.ms = threadCpuMs() - t0;
+    o.ms = essential_bench::threadCpuMs() - t0;
     if (found) {
         o.rms = rmsEpipolarDistance(E, s);
         o.correct = o.rms < rmsThreshold;

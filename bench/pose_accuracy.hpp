@@ -19,15 +19,6 @@
 
 namespace essential_bench {
 
-/** Thread CPU time in milliseconds (CLOCK_THREAD_CPUTIME_ID): on a shared machine the time the
-thread waits for a core is not charged to it. */
-inline double threadCpuMs()
-{
-    timespec ts;
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-    return ts.tv_sec * 1e3 + ts.tv_nsec * 1e-6;
-}
-
 /** One estimate: rotation and translation direction errors in degrees (180 for a failure) and
 its thread CPU time. */
 struct PoseOutcome

@@ -24,17 +24,6 @@
 #include <string>
 #include <vector>
 
-namespace {
-
-double cpuMicroseconds()
-{
-    timespec ts;
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-    return ts.tv_sec * 1e6 + ts.tv_nsec * 1e-3;
-}
-
-} // namespace
-
 int main(int argc, char** argv)
 {
     int samples = 1000;
@@ -75,10 +64,10 @@ int main(int argc, char** argv)
             }
             std::vector<cv::Matx33d> E(static_cast<size_t>(samples));
             std::vector<int> count(static_cast<size_t>(samples));
-            const double t0 = cpuMicroseconds();
+            const double t0 = essential_bench::threadCpuMs();
             for (size_t t = 0; t < scenes.size(); ++t)
                 count[t] = robust->solve(scenes[t].x1.data(), scenes[t].x2.data(), rng, &E[t]);
-            const double us = (cpuMicroseconds() - t0) / samples;
+            const double us = 1000.0 * (essential_bench::threadCpuMs() - t0) / samples;
             int correct = 0, returned = 0;
             for (size_t t = 0; t < scenes.size(); ++t) {
                 returned += count[t] == 1;

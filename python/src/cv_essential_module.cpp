@@ -85,11 +85,16 @@ cv::Mat optionalMat(const py::object& o, const char* name)
     return asMat(py::array::ensure(o), name);
 }
 
-/** (retval, mask) as cv2 returns them: E (or an empty array) and the mask, None when not written.
- */
+/** A mask as cv2 returns it: the array, None when it was not written. */
+py::object maskResult(const cv::Mat& mask)
+{
+    return mask.empty() ? py::object(py::none()) : py::object(toArray(mask));
+}
+
+/** (retval, mask) as cv2 returns them: E (or an empty array) and the mask. */
 py::tuple essentialResult(const cv::Mat& E, const cv::Mat& mask)
 {
-    return py::make_tuple(toArray(E), mask.empty() ? py::object(py::none()) : toArray(mask));
+    return py::make_tuple(toArray(E), maskResult(mask));
 }
 
 py::tuple findCamera(const py::array& points1, const py::array& points2,
@@ -184,8 +189,7 @@ py::tuple poseFromCamera(const py::array& E, const py::array& points1, const py:
     cv::Mat R, t, mask = optionalMat(maskIn, "mask").clone();
     int inFront = 0;
     withoutGil([&] { inFront = cv::essential::recoverPose(e, p1, p2, K, R, t, mask); });
-    return py::make_tuple(inFront, toArray(R), toArray(t),
-                          mask.empty() ? py::object(py::none()) : toArray(mask));
+    return py::make_tuple(inFront, toArray(R), toArray(t), maskResult(mask));
 }
 
 py::tuple poseFromFocal(const py::array& E, const py::array& points1, const py::array& points2,
@@ -200,8 +204,7 @@ py::tuple poseFromFocal(const py::array& E, const py::array& points1, const py::
         inFront = cv::essential::recoverPose(e, p1, p2, R, t, focal,
                                              cv::Point2d(pp.first, pp.second), mask);
     });
-    return py::make_tuple(inFront, toArray(R), toArray(t),
-                          mask.empty() ? py::object(py::none()) : toArray(mask));
+    return py::make_tuple(inFront, toArray(R), toArray(t), maskResult(mask));
 }
 
 py::tuple poseWithDistance(const py::array& E, const py::array& points1, const py::array& points2,
@@ -215,8 +218,7 @@ py::tuple poseWithDistance(const py::array& E, const py::array& points1, const p
     withoutGil([&] {
         inFront = cv::essential::recoverPose(e, p1, p2, K, R, t, distanceThresh, mask, points);
     });
-    return py::make_tuple(inFront, toArray(R), toArray(t),
-                          mask.empty() ? py::object(py::none()) : toArray(mask), toArray(points));
+    return py::make_tuple(inFront, toArray(R), toArray(t), maskResult(mask), toArray(points));
 }
 
 py::tuple poseFromTwoCameras(const py::array& points1, const py::array& points2,
@@ -236,8 +238,7 @@ py::tuple poseFromTwoCameras(const py::array& points1, const py::array& points2,
         inFront = cv::essential::recoverPose(p1, p2, K1, d1, K2, d2, E, R, t, method, prob,
                                              threshold, mask);
     });
-    return py::make_tuple(inFront, toArray(E), toArray(R), toArray(t),
-                          mask.empty() ? py::object(py::none()) : toArray(mask));
+    return py::make_tuple(inFront, toArray(E), toArray(R), toArray(t), maskResult(mask));
 }
 
 // The module's own overload: EssentialParams in, (retval, mask, report) out.
@@ -251,8 +252,7 @@ py::tuple findWithParams(const py::array& points1, const py::array& points2,
     cv::Mat E, mask = optionalMat(maskIn, "mask").clone();
     cv::essential::EssentialReport report;
     withoutGil([&] { E = cv::essential::findEssentialMatIter(p1, p2, K, params, mask, &report); });
-    return py::make_tuple(toArray(E), mask.empty() ? py::object(py::none()) : toArray(mask),
-                          report);
+    return py::make_tuple(toArray(E), maskResult(mask), report);
 }
 
 py::array matxArray(const cv::Matx33d& m)

@@ -81,6 +81,16 @@ Vec3d homogeneous(const Point2d& p)
     return Vec3d(p.x, p.y, 1.0);
 }
 
+/** Whether H maps a to within `band` of b (transfer distance in image 2; false when H sends a to
+infinity). */
+bool transfersWithin(const Matx33d& H, const Point2d& a, const Point2d& b, double band)
+{
+    const Vec3d m = H * homogeneous(a);
+    if (!(std::abs(m[2]) > 1e-12)) return false;
+    const double dx = m[0] / m[2] - b.x, dy = m[1] / m[2] - b.y;
+    return dx * dx + dy * dy <= band * band;
+}
+
 /** The homography through four correspondences (h33 = 1; 8 x 8 linear system). False when the
 points are degenerate (three collinear). */
 bool homographyOf4(const Point2d* a, const Point2d* b, Matx33d& H)
@@ -131,12 +141,8 @@ bool planeLikely(const std::vector<Point2d>& a, const std::vector<Point2d>& b, d
         if (!homographyOf4(pa, pb, H)) continue;
         int on = 0;
         for (int k = 0; k < kProbePoints; ++k) {
-            const int i = static_cast<int>(rng.uniform(0, n));
-            const Vec3d m = H * homogeneous(a[static_cast<size_t>(i)]);
-            if (!(std::abs(m[2]) > 1e-12)) continue;
-            const double dx = m[0] / m[2] - b[static_cast<size_t>(i)].x;
-            const double dy = m[1] / m[2] - b[static_cast<size_t>(i)].y;
-            on += dx * dx + dy * dy <= probeBand * probeBand;
+            const size_t i = static_cast<size_t>(rng.uniform(0, n));
+            on += transfersWithin(H, a[i], b[i], probeBand);
         }
         if (on >= kProbeShare * kProbePoints) return true;
     }
@@ -180,13 +186,7 @@ PlaneParallaxResult checkPlaneAndParallax(const Problem& problem, const Matx33d&
     offPlane.reserve(static_cast<size_t>(n));
     int onPlaneInliers = 0;
     for (int i = 0; i < n; ++i) {
-        const Vec3d m = H * homogeneous(problem.p1[i]);
-        bool onPlane = false;
-        if (std::abs(m[2]) > 1e-12) {
-            const double dx = m[0] / m[2] - problem.p2[i].x, dy = m[1] / m[2] - problem.p2[i].y;
-            onPlane = dx * dx + dy * dy <= memberBand * memberBand;
-        }
-        if (onPlane) {
+        if (transfersWithin(H, problem.p1[i], problem.p2[i], memberBand)) {
             ++result.planeInliers;
             onPlaneInliers += mask[i];
         } else {

@@ -31,6 +31,16 @@ int depthOf(const py::dtype& dt)
     return -1;
 }
 
+/** numpy's byte-order flag read from the descriptor itself ('=' native, '|' not applicable,
+'<' or '>' explicit): no Python attribute lookup on the per-call path. */
+bool isNativeByteOrder(const py::dtype& dt)
+{
+    const char order = py::detail::array_descriptor_proxy(dt.ptr())->byteorder;
+    const char native = py::detail::array_descriptor_proxy(py::dtype::of<int>().ptr())->byteorder;
+    return order == '=' || order == '|' || order == native ||
+           (native == '=' && order == (PY_LITTLE_ENDIAN ? '<' : '>'));
+}
+
 bool refuse(std::string* why, const std::string& reason)
 {
     if (why) *why = reason;
@@ -83,7 +93,7 @@ bool toInputMat(py::handle src, InputMat& out, std::string* why)
         return refuse(why, std::string(kExpected) + "; got " + describe(src));
     py::array a = py::reinterpret_borrow<py::array>(src);
     py::dtype dt = a.dtype();
-    if (!dt.attr("isnative").cast<bool>()) {
+    if (!isNativeByteOrder(dt)) {
         // cv2 converts arrays of the other byte order; so does the module (a native copy).
         try {
             a = a.attr("astype")(dt.attr("newbyteorder")("="));

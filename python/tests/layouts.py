@@ -82,7 +82,7 @@ def table():
 
         def cell(o):
             if o[0] == "raise":
-                return f"raises {o[1]}"
+                return "raises cv2.error" if o[1] == "error" else f"raises {o[1]}"
             return "E {} {}, mask {} {}".format(o[1][0][0], o[1][0][1], o[1][1][0], o[1][1][1])
 
         same = theirs[:2] == ours[:2] if theirs[0] == "ok" else ours[0] == "raise"

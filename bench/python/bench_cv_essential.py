@@ -42,6 +42,20 @@ def cpu_ms(f):
     return 1000.0 * (time.thread_time() - t0), out
 
 
+def paired_call(p1, p2, K, params, native_first):
+    """(ms through Python, ms of the same call in C++): the params form called from Python, and
+    timed inside the module around the library call alone (the private hook
+    _forms.nativeCallMs), both on the thread CPU clock, in the given order."""
+    native = cv_essential._forms.nativeCallMs
+    if native_first:
+        c = native(p1, p2, K, params)
+        py = cpu_ms(lambda: cv_essential.findEssentialMatIter(p1, p2, K, params))[0]
+    else:
+        py = cpu_ms(lambda: cv_essential.findEssentialMatIter(p1, p2, K, params))[0]
+        c = native(p1, p2, K, params)
+    return py, c
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--problems", type=int, default=100)
@@ -52,7 +66,6 @@ def main():
     print(f"N = {args.points}, {args.problems} problems per ratio, thread CPU time, medians")
     print("| inliers | cv_essential ms | cv2 ms | cv2 / ours | C++ call (params form) ms | binding overhead |")
     print("|---|---|---|---|---|---|")
-    native_call = cv_essential._forms.nativeCallMs
     for ratio in (0.9, 0.5):
         problems = [scene(args.points, ratio, rng) for _ in range(args.problems)]
         params = cv_essential.EssentialParams()
@@ -73,12 +86,7 @@ def main():
         native, overhead = [], []
         for p1, p2, K in problems:
             for r in range(args.rounds):
-                if r % 2:
-                    c = native_call(p1, p2, K, params)
-                    py = cpu_ms(lambda: cv_essential.findEssentialMatIter(p1, p2, K, params))[0]
-                else:
-                    py = cpu_ms(lambda: cv_essential.findEssentialMatIter(p1, p2, K, params))[0]
-                    c = native_call(p1, p2, K, params)
+                py, c = paired_call(p1, p2, K, params, native_first=r % 2 == 1)
                 native.append(c)
                 overhead.append(py - c)
         mo, mt, mn = statistics.median(ours), statistics.median(theirs), statistics.median(native)
@@ -93,12 +101,7 @@ def main():
                                         refine=False, recoverPose=False, planeParallax=False)
     fixed = []
     for r in range(20 * args.problems):
-        if r % 2:
-            c = native_call(p1, p2, K, tiny)
-            py = cpu_ms(lambda: cv_essential.findEssentialMatIter(p1, p2, K, tiny))[0]
-        else:
-            py = cpu_ms(lambda: cv_essential.findEssentialMatIter(p1, p2, K, tiny))[0]
-            c = native_call(p1, p2, K, tiny)
+        py, c = paired_call(p1, p2, K, tiny, native_first=r % 2 == 1)
         fixed.append(py - c)
     print(f"\nfixed cost of a call (one sample, no refinement, {len(fixed)} paired calls): "
           f"{statistics.median(fixed) * 1000:.1f} us")

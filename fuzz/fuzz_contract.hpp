@@ -58,6 +58,15 @@ inline void checkPose(int inFront, const cv::Mat& R, const cv::Mat& t, int n)
     if (!(std::abs(tn - 1.0) < 1e-6 || tn == 0.0)) broken("t neither unit nor zero");
 }
 
+/** recoverPose's triangulated points: 4 x n CV_64F and finite, or empty with the no-pose answer
+(E cannot be decomposed: count 0, t = 0), as essential.hpp documents. */
+inline void checkTriangulated(const cv::Mat& X, int n, int inFront, const cv::Mat& t)
+{
+    if (X.empty() && inFront == 0 && cv::norm(t) == 0.0) return;
+    if (X.rows != 4 || X.cols != n || X.type() != CV_64F || !cv::checkRange(X))
+        broken("triangulated points shape");
+}
+
 /** Runs one input: a cv::Exception is the documented answer to bad input; any other exception
 breaks the contract. OpenCV's printing of every CV_Error to stderr is silenced once. */
 template <class Run> int runGuarded(Run run)

@@ -165,9 +165,7 @@ void runOne(FuzzInput& in)
                 const double d = in.pick(4) == 0 ? in.anyDouble() : thresholds[in.pick(4)];
                 cv::Mat X;
                 inFront = ess::recoverPose(E, p1, p2, K, R, t, d, poseMask, X);
-                if (X.rows != 4 || X.cols != std::max(n, 0) || X.type() != CV_64F ||
-                    !cv::checkRange(X))
-                    broken("triangulated points shape");
+                checkTriangulated(X, std::max(n, 0), inFront, t);
             }
         } else {
             const double focal = in.pick(3) == 0 ? in.anyDouble() : 50.0 + in.pick(1000);

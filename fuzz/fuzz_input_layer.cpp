@@ -185,9 +185,7 @@ void runOne(FuzzInput& in)
             cv::Mat X;
             const double d = in.pick(2) ? in.anyDouble() : 50.0;
             inFront = ess::recoverPose(E, p1, p2, camera(in), R, t, d, mask, X);
-            if (X.rows != 4 || X.cols != p1.checkVector(2) || X.type() != CV_64F ||
-                !cv::checkRange(X))
-                broken("triangulated points shape");
+            checkTriangulated(X, p1.checkVector(2), inFront, t);
         }
         checkPose(inFront, R, t, p1.checkVector(2));
         break;

@@ -16,6 +16,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -415,3 +416,32 @@ TEST(Nister, EstimateWithNisterRecoversThePose)
 }
 
 } // namespace
+
+TEST(Nister, EverySolutionIsEssentialWithinTheDocumentedTolerance)
+{
+    // The solver fuzz target's first finding (fuzz/regression/solvers/): on a random sample a kept
+    // root had singular values (1.000019, 0.999981, 1.2e-8), outside the 1e-6 first written in
+    // solver.hpp but inside what the trace-constraint test (residual <= 1e-2) admits. The
+    // documented bound is now 1e-2 s; this checks it, and the scale, on random and pose samples.
+    cv::Ptr<cv::essential::EssentialSolver> solver = cv::essential::createSolver("nister");
+    cv::RNG rng(7);
+    std::array<cv::Matx33d, 10> solutions;
+    double worstGap = 0.0;
+    for (int trial = 0; trial < 3000; ++trial) {
+        cv::Point2d x1[5], x2[5];
+        for (int i = 0; i < 5; ++i) {
+            x1[i] = cv::Point2d(rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0));
+            x2[i] = cv::Point2d(rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0));
+        }
+        const int n = solver->solve(x1, x2, rng, solutions.data());
+        for (int k = 0; k < n; ++k) {
+            cv::Vec3d w;
+            cv::SVD::compute(solutions[static_cast<size_t>(k)], w, cv::SVD::NO_UV);
+            EXPECT_NEAR(cv::norm(solutions[static_cast<size_t>(k)]), std::sqrt(2.0), 1e-9);
+            EXPECT_LE(w[0] - w[1], 1e-2 * w[0]);
+            EXPECT_LE(w[2], 1e-2 * w[0]);
+            worstGap = std::max(worstGap, (w[0] - w[1]) / w[0]);
+        }
+    }
+    std::printf("worst relative singular-value gap over 3000 random samples: %.2e\n", worstGap);
+}

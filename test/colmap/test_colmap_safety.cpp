@@ -167,3 +167,27 @@ TEST(ColmapSafety, UnverifiedPairsOnlyLeaveTheOthersAsTheyWere)
     for (const auto& row : before)
         EXPECT_EQ(after.at(row.first), row.second) << "pair " << row.first;
 }
+
+TEST(ColmapSafety, UsageErrorsExitWithTwo)
+{
+    std::string output;
+    EXPECT_EQ(colmap_test::runCommand("safety_usage_missing", kProgram, output), 2) << output;
+    EXPECT_NE(output.find("missing --database"), std::string::npos) << output;
+    EXPECT_EQ(colmap_test::runCommand("safety_usage_pairs",
+                                      kProgram + " --database x.db --pairs some", output),
+              2)
+        << output;
+    EXPECT_NE(output.find("--pairs must be all or unverified"), std::string::npos) << output;
+    EXPECT_EQ(colmap_test::runCommand("safety_usage_min_inliers",
+                                      kProgram + " --database x.db --min-inliers 5", output),
+              2)
+        << output;
+    EXPECT_EQ(colmap_test::runCommand(
+                  "safety_missing_file",
+                  kProgram + " --database " + COLMAP_TEST_WORK + "/no_such_file.db", output),
+              1)
+        << output;
+    EXPECT_NE(output.find("cannot open database"), std::string::npos) << output;
+    EXPECT_FALSE(colmap_test::fileExists(std::string(COLMAP_TEST_WORK) + "/no_such_file.db"))
+        << "a missing database must not be created";
+}

@@ -71,60 +71,64 @@ struct Options
     bool json = false;
 };
 
+/** One "--name value" option into `options`; fail(..., 2) for a bad value or an unknown name. */
+void parseValueOption(const std::string& arg, const std::string& value, Options& options)
+{
+    long long number;
+    cv::essential::EssentialParams& params = options.verification.params;
+    if (arg == "--database") {
+        options.database = value;
+    } else if (arg == "--threads") {
+        if (!parseInt(value, number) || number < 1 || number > 1024)
+            fail("--threads must be an integer in [1, 1024], not '" + value + "'", 2);
+        options.verification.threads = static_cast<int>(number);
+    } else if (arg == "--solver") {
+        // One name or mix ("gn+nister"); createSolver() checks it and names the registered ones.
+        if (essential_samples::parseSolverList("--solver", value).size() != 1)
+            fail("--solver takes one solver or mix (gn+nister), not a list", 2);
+        params.solver = value;
+    } else if (arg == "--threshold") {
+        if (!parseDouble(value, params.threshold) || !(params.threshold > 0.0))
+            fail("--threshold must be a positive number of pixels, not '" + value + "'", 2);
+    } else if (arg == "--min-inliers") {
+        if (!parseInt(value, number) || number < 6 || number > 1000000)
+            fail("--min-inliers must be an integer of at least 6, not '" + value + "'", 2);
+        options.verification.minInliers = static_cast<int>(number);
+    } else if (arg == "--pairs") {
+        if (value != "all" && value != "unverified")
+            fail("--pairs must be all or unverified, not '" + value + "'", 2);
+        options.verification.unverifiedOnly = value == "unverified";
+    } else if (arg == "--max-iters") {
+        if (!parseInt(value, number) || number < 1 || number > 100000000)
+            fail("--max-iters must be a positive integer, not '" + value + "'", 2);
+        params.maxIters = static_cast<int>(number);
+    } else if (arg == "--seed") {
+        if (!parseSeed(value, params.seed))
+            fail("--seed must be a non-negative integer, not '" + value + "'", 2);
+    } else {
+        fail("unknown option '" + arg + "' (see --help)", 2);
+    }
+}
+
 Options parseOptions(int argc, char** argv)
 {
     Options options;
+    // Options without a value.
+    const std::map<std::string, bool*> switches = {{"--json", &options.json},
+                                                   {"--dry-run", &options.dryRun}};
     for (int i = 1; i < argc; ++i) {
         std::string arg = argv[i];
         if (arg == "-h" || arg == "--help") {
             std::cout << kUsage;
             std::exit(0);
         }
-        if (arg == "--json") {
-            options.json = true;
-            continue;
-        }
-        if (arg == "--dry-run") {
-            options.dryRun = true;
-            continue;
-        }
-        if (!isOption(arg)) fail("unexpected argument '" + arg + "' (see --help)", 2);
-        const std::string value = optionValue(arg, i, argc, argv);
-        long long number;
-        cv::essential::EssentialParams& params = options.verification.params;
-        if (arg == "--database") {
-            options.database = value;
-        } else if (arg == "--threads") {
-            if (!parseInt(value, number) || number < 1 || number > 1024)
-                fail("--threads must be an integer in [1, 1024], not '" + value + "'", 2);
-            options.verification.threads = static_cast<int>(number);
-        } else if (arg == "--solver") {
-            try {
-                cv::essential::createSolver(value);
-            } catch (const cv::Exception& e) {
-                fail("--solver: " + e.err, 2);
-            }
-            params.solver = value;
-        } else if (arg == "--threshold") {
-            if (!parseDouble(value, params.threshold) || !(params.threshold > 0.0))
-                fail("--threshold must be a positive number of pixels, not '" + value + "'", 2);
-        } else if (arg == "--min-inliers") {
-            if (!parseInt(value, number) || number < 6 || number > 1000000)
-                fail("--min-inliers must be an integer of at least 6, not '" + value + "'", 2);
-            options.verification.minInliers = static_cast<int>(number);
-        } else if (arg == "--pairs") {
-            if (value != "all" && value != "unverified")
-                fail("--pairs must be all or unverified, not '" + value + "'", 2);
-            options.verification.unverifiedOnly = value == "unverified";
-        } else if (arg == "--max-iters") {
-            if (!parseInt(value, number) || number < 1 || number > 100000000)
-                fail("--max-iters must be a positive integer, not '" + value + "'", 2);
-            params.maxIters = static_cast<int>(number);
-        } else if (arg == "--seed") {
-            if (!parseSeed(value, params.seed))
-                fail("--seed must be a non-negative integer, not '" + value + "'", 2);
+        const auto flag = switches.find(arg);
+        if (flag != switches.end()) {
+            *flag->second = true;
+        } else if (!isOption(arg)) {
+            fail("unexpected argument '" + arg + "' (see --help)", 2);
         } else {
-            fail("unknown option '" + arg + "' (see --help)", 2);
+            parseValueOption(arg, optionValue(arg, i, argc, argv), options);
         }
     }
     if (options.database.empty()) fail("missing --database DB.db (see --help)", 2);

@@ -7,6 +7,7 @@ compare sparse reconstructions (registered images, points, track length, reproje
 optionally plotting the camera paths.
 
   colmap_tools.py export-matches DB.db OUT.txt
+  colmap_tools.py agreement A.db B.db
   colmap_tools.py compare --model NAME=SPARSE_DIR [--model ...] [--truth poses.txt]
                   [--json OUT.json] [--plot OUT.png] [--title T]
                   [--require-registered N] [--max-rotation-deg D] [--max-position P]
@@ -44,6 +45,35 @@ def export_matches(db_path, out_path):
             out.write("\n\n")
             pairs += 1
     print("exported %d pairs to %s" % (pairs, out_path))
+
+
+CONFIG_NAMES = {1: "DEGENERATE", 2: "CALIBRATED", 3: "UNCALIBRATED", 4: "PLANAR", 5: "PANORAMIC",
+                6: "PLANAR_OR_PANORAMIC", 7: "WATERMARK", 8: "MULTIPLE"}
+
+
+def agreement(db_a, db_b):
+    """How two verifications of the same matches agree: configs of each, and per pair the overlap
+    of the inlier sets (common / larger set)."""
+    def load(path):
+        db = sqlite3.connect(path)
+        return {pid: (config, set(map(tuple, np.frombuffer(data, np.uint32).reshape(rows, 2)))
+                      if rows else set())
+                for pid, rows, data, config in db.execute(
+                    "SELECT pair_id, rows, data, config FROM two_view_geometries")}
+    a, b = load(db_a), load(db_b)
+    for name, rows in (("A", a), ("B", b)):
+        counts = {}
+        for config, _ in rows.values():
+            counts[CONFIG_NAMES.get(config, config)] = counts.get(CONFIG_NAMES.get(config, config),
+                                                                  0) + 1
+        print("%s %s: %s; %d inlier matches" % (name, (db_a, db_b)[name == "B"], counts,
+                                               sum(len(m) for _, m in rows.values())))
+    common = sorted(set(a) & set(b))
+    overlap = np.array([len(a[p][1] & b[p][1]) / max(1, len(a[p][1]), len(b[p][1]))
+                        for p in common])
+    print("%d pairs in both; inlier overlap: median %.4f, 5th percentile %.4f, minimum %.4f; "
+          "pairs above 0.95: %d" % (len(common), np.median(overlap), np.percentile(overlap, 5),
+                                    overlap.min(), int(np.sum(overlap > 0.95))))
 
 
 def quaternion_to_matrix(q):
@@ -122,9 +152,17 @@ def align_to_truth(poses, truth):
     return frames, rotation, position, aligned
 
 
+def relative_pose(poses):
+    """R, unit t of the second image (by name) from the first: X2 = R X1 + t."""
+    (R1, C1), (R2, C2) = (poses[n] for n in sorted(poses)[:2])
+    t = -R2 @ (C2 - C1)
+    return R2 @ R1.T, t / np.linalg.norm(t)
+
+
 def compare(args):
     truth = read_truth(args.truth) if args.truth else None
     results, paths = {}, {}
+    first_relative = None
     for spec in args.model:
         name, sparse = spec.split("=", 1)
         if not os.path.isdir(sparse):
@@ -140,8 +178,19 @@ def compare(args):
                          position_error_max=float(pos.max()),
                          position_error_max_of_travel=float(pos.max() / travel))
             paths[name] = (frames, aligned)
+        elif len(poses) >= 2:
+            # No truth: the relative pose of the first two images against the first model's.
+            R, t = relative_pose(poses)
+            if first_relative is None:
+                first_relative = (R, t)
+            stats.update(relative_rotation_deg_vs_first=float(
+                rotation_angle_deg(R @ first_relative[0].T)),
+                relative_direction_deg_vs_first=float(np.degrees(np.arccos(
+                    np.clip(t @ first_relative[1], -1, 1)))))
         results[name] = stats
     keys = ["registered", "points", "track_length", "reprojection_px"]
+    if not truth and first_relative is not None:
+        keys += ["relative_rotation_deg_vs_first", "relative_direction_deg_vs_first"]
     if truth:
         keys += ["rotation_error_deg_mean", "rotation_error_deg_max", "position_error_mean",
                  "position_error_max"]
@@ -201,6 +250,9 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__,
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
     sub = parser.add_subparsers(dest="command", required=True)
+    a = sub.add_parser("agreement")
+    a.add_argument("database_a")
+    a.add_argument("database_b")
     e = sub.add_parser("export-matches")
     e.add_argument("database")
     e.add_argument("output")
@@ -214,6 +266,9 @@ def main():
     c.add_argument("--max-rotation-deg", type=float)
     c.add_argument("--max-position", type=float)
     args = parser.parse_args()
+    if args.command == "agreement":
+        agreement(args.database_a, args.database_b)
+        return 0
     if args.command == "export-matches":
         export_matches(args.database, args.output)
         return 0

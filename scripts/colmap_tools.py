@@ -159,6 +159,41 @@ def relative_pose(poses):
     return R2 @ R1.T, t / np.linalg.norm(t)
 
 
+def plot_paths(truth, paths, out_png, title):
+    """Camera centres after alignment, as offsets from the true centre of the same frame: along
+    the rail, and across it in two perpendicular directions (truth: the zero line), against the
+    distance travelled along the rail."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    frames = sorted(truth)
+    start = truth[frames[0]][1]
+    rail = truth[frames[-1]][1] - start
+    rail /= np.linalg.norm(rail)
+    # Two directions across the rail: world z (or x) made orthogonal to it, then their cross product.
+    up = np.array([0.0, 0.0, 1.0]) if abs(rail[2]) < 0.9 else np.array([1.0, 0.0, 0.0])
+    across1 = up - rail * (up @ rail)
+    across1 /= np.linalg.norm(across1)
+    across2 = np.cross(rail, across1)
+    axes = [(rail, "along the rail"), (across1, "across the rail (up)"),
+            (across2, "across the rail (sideways)")]
+    fig, ax = plt.subplots(1, 3, figsize=(14, 4))
+    travel = [(truth[k][1] - start) @ rail for k in frames]
+    for j, (direction, label) in enumerate(axes):
+        ax[j].plot(travel, np.zeros(len(travel)), "k-", lw=3, alpha=0.3, label="truth")
+        for (name, (est_frames, aligned)), style in zip(paths.items(), ["o", "x", "+", "s"]):
+            along = [(truth[k][1] - start) @ rail for k in est_frames]
+            offsets = [(c - truth[k][1]) @ direction for k, c in zip(est_frames, aligned)]
+            ax[j].plot(along, offsets, style, ms=5, label=name)
+        ax[j].set_xlabel("distance along the rail (scene units)")
+        ax[j].set_ylabel("offset %s" % label)
+        ax[j].grid(True, alpha=0.3)
+    ax[0].legend()
+    fig.suptitle(title or "camera centres after similarity alignment, offsets from the truth")
+    fig.tight_layout()
+    fig.savefig(out_png, dpi=100)
+
+
 def compare(args):
     truth = read_truth(args.truth) if args.truth else None
     results, paths = {}, {}
@@ -207,26 +242,7 @@ def compare(args):
         with open(args.json, "w") as f:
             json.dump(results, f, indent=2)
     if args.plot and truth:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-        fig, ax = plt.subplots(1, 2, figsize=(11, 4.2))
-        tk = sorted(truth)
-        tc = np.array([truth[k][1] for k in tk])
-        # The rail runs along one world axis: plot along-rail position against the two others.
-        axis = int(np.argmax(np.ptp(tc, axis=0)))
-        others = [i for i in range(3) if i != axis]
-        for j, other in enumerate(others):
-            ax[j].plot(tc[:, axis], tc[:, other], "k-", lw=3, alpha=0.3, label="truth")
-            for (name, (frames, aligned)), style in zip(paths.items(), ["o", "x", "+", "s"]):
-                ax[j].plot(aligned[:, axis], aligned[:, other], style, ms=5, label=name)
-            ax[j].set_xlabel("world %s (along the rail)" % "xyz"[axis])
-            ax[j].set_ylabel("world %s" % "xyz"[other])
-            ax[j].grid(True, alpha=0.3)
-        ax[0].legend()
-        fig.suptitle(args.title or "camera centres after similarity alignment")
-        fig.tight_layout()
-        fig.savefig(args.plot, dpi=110)
+        plot_paths(truth, paths, args.plot, args.title)
     failed = []
     for name, stats in results.items():
         if args.require_registered is not None and (stats.get("registered") or 0) < \

@@ -167,9 +167,9 @@ TEST(ColmapDatabase, VerifiedPairsMatchTheTruthAndColmapsOwnVerification)
         const double directionError =
             std::acos(std::min(1.0, r.tvec.dot(ttrue) / (cv::norm(r.tvec) * cv::norm(ttrue)))) *
             180 / CV_PI;
-        // Measured: at most 0.03 degrees of rotation and 0.6 degrees of direction on these pairs
-        // (baselines 0.5 to 2 units); bounds with a margin for other COLMAP builds' features.
-        EXPECT_LT(rotationError, 0.2);
+        // Measured: at most 0.09 degrees of rotation and 0.22 degrees of direction on these pairs
+        // (baselines 0.5 to 2 units); the bounds leave a margin for other COLMAP builds' features.
+        EXPECT_LT(rotationError, 0.5);
         EXPECT_LT(directionError, 3.0);
         // COLMAP reads qvec as a unit quaternion (w, x, y, z).
         EXPECT_NEAR(cv::norm(r.qvec), 1.0, 1e-12);

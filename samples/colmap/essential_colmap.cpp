@@ -27,13 +27,8 @@ using essential_colmap::StoredGeometry;
 using essential_colmap::twoViewConfigName;
 using essential_colmap::Verification;
 using essential_colmap::VerificationOptions;
-using essential_samples::elapsedMs;
-using essential_samples::fail;
-using essential_samples::isOption;
-using essential_samples::optionValue;
-using essential_samples::parseDouble;
-using essential_samples::parseInt;
-using essential_samples::parseSeed;
+// The command-line helpers the sample programs share (cli_common.hpp).
+namespace cli = essential_samples;
 
 const char* const kUsage =
     "usage: essential_colmap --database DB.db [--threads N] [--solver S] [--threshold PX]\n"
@@ -71,7 +66,8 @@ struct Options
     bool json = false;
 };
 
-/** One "--name value" option into `options`; fail(..., 2) for a bad value or an unknown name. */
+/** One "--name value" option into `options`; cli::fail(..., 2) for a bad value or an unknown name.
+ */
 void parseValueOption(const std::string& arg, const std::string& value, Options& options)
 {
     long long number;
@@ -79,34 +75,34 @@ void parseValueOption(const std::string& arg, const std::string& value, Options&
     if (arg == "--database") {
         options.database = value;
     } else if (arg == "--threads") {
-        if (!parseInt(value, number) || number < 1 || number > 1024)
-            fail("--threads must be an integer in [1, 1024], not '" + value + "'", 2);
+        if (!cli::parseInt(value, number) || number < 1 || number > 1024)
+            cli::fail("--threads must be an integer in [1, 1024], not '" + value + "'", 2);
         options.verification.threads = static_cast<int>(number);
     } else if (arg == "--solver") {
         // One name or mix ("gn+nister"); createSolver() checks it and names the registered ones.
-        if (essential_samples::parseSolverList("--solver", value).size() != 1)
-            fail("--solver takes one solver or mix (gn+nister), not a list", 2);
+        if (cli::parseSolverList("--solver", value).size() != 1)
+            cli::fail("--solver takes one solver or mix (gn+nister), not a list", 2);
         params.solver = value;
     } else if (arg == "--threshold") {
-        if (!parseDouble(value, params.threshold) || !(params.threshold > 0.0))
-            fail("--threshold must be a positive number of pixels, not '" + value + "'", 2);
+        if (!cli::parseDouble(value, params.threshold) || !(params.threshold > 0.0))
+            cli::fail("--threshold must be a positive number of pixels, not '" + value + "'", 2);
     } else if (arg == "--min-inliers") {
-        if (!parseInt(value, number) || number < 6 || number > 1000000)
-            fail("--min-inliers must be an integer of at least 6, not '" + value + "'", 2);
+        if (!cli::parseInt(value, number) || number < 6 || number > 1000000)
+            cli::fail("--min-inliers must be an integer of at least 6, not '" + value + "'", 2);
         options.verification.minInliers = static_cast<int>(number);
     } else if (arg == "--pairs") {
         if (value != "all" && value != "unverified")
-            fail("--pairs must be all or unverified, not '" + value + "'", 2);
+            cli::fail("--pairs must be all or unverified, not '" + value + "'", 2);
         options.verification.unverifiedOnly = value == "unverified";
     } else if (arg == "--max-iters") {
-        if (!parseInt(value, number) || number < 1 || number > 100000000)
-            fail("--max-iters must be a positive integer, not '" + value + "'", 2);
+        if (!cli::parseInt(value, number) || number < 1 || number > 100000000)
+            cli::fail("--max-iters must be a positive integer, not '" + value + "'", 2);
         params.maxIters = static_cast<int>(number);
     } else if (arg == "--seed") {
-        if (!parseSeed(value, params.seed))
-            fail("--seed must be a non-negative integer, not '" + value + "'", 2);
+        if (!cli::parseSeed(value, params.seed))
+            cli::fail("--seed must be a non-negative integer, not '" + value + "'", 2);
     } else {
-        fail("unknown option '" + arg + "' (see --help)", 2);
+        cli::fail("unknown option '" + arg + "' (see --help)", 2);
     }
 }
 
@@ -125,13 +121,13 @@ Options parseOptions(int argc, char** argv)
         const auto flag = switches.find(arg);
         if (flag != switches.end()) {
             *flag->second = true;
-        } else if (!isOption(arg)) {
-            fail("unexpected argument '" + arg + "' (see --help)", 2);
+        } else if (!cli::isOption(arg)) {
+            cli::fail("unexpected argument '" + arg + "' (see --help)", 2);
         } else {
-            parseValueOption(arg, optionValue(arg, i, argc, argv), options);
+            parseValueOption(arg, cli::optionValue(arg, i, argc, argv), options);
         }
     }
-    if (options.database.empty()) fail("missing --database DB.db (see --help)", 2);
+    if (options.database.empty()) cli::fail("missing --database DB.db (see --help)", 2);
     return options;
 }
 
@@ -157,7 +153,7 @@ private:
     void update(int done, int total)
     {
         std::lock_guard<std::mutex> lock(mutex_);
-        const double ms = elapsedMs(start_);
+        const double ms = cli::elapsedMs(start_);
         if (done != total && ms - lastMs_ < 100) return;
         lastMs_ = ms;
         shown_ = true;
@@ -189,8 +185,8 @@ int run(int argc, char** argv)
 
     const auto writeStart = std::chrono::steady_clock::now();
     if (!options.dryRun) essential_colmap::writeTwoViewGeometries(database, result.records);
-    const double writeMs = elapsedMs(writeStart);
-    const double totalMs = elapsedMs(start);
+    const double writeMs = cli::elapsedMs(writeStart);
+    const double totalMs = cli::elapsedMs(start);
 
     std::map<std::string, int> configCounts;
     int replaced = 0, inserted = 0;
@@ -279,5 +275,5 @@ int run(int argc, char** argv)
 
 int main(int argc, char** argv)
 {
-    return essential_samples::runCli("essential_colmap", run, argc, argv);
+    return cli::runCli("essential_colmap", run, argc, argv);
 }

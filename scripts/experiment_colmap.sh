@@ -52,6 +52,16 @@ wall_seconds() {
     awk -v a="$start" -v b="$end" 'BEGIN { printf "%.3f\n", b - a }'
 }
 
+# sql DB STATEMENT: runs one SQL statement (Python's sqlite3: no sqlite3 program needed), prints the
+# first column of each row.
+sql() {
+    /usr/bin/python3 -c 'import sqlite3, sys
+db = sqlite3.connect(sys.argv[1])
+for row in db.execute(sys.argv[2]):
+    print(row[0])
+db.commit()' "$1" "$2"
+}
+
 median() { sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
 
 run_set() {
@@ -76,7 +86,7 @@ run_set() {
     $tools export-matches "$dir/base.db" "$dir/raw_matches.txt" >/dev/null
     : >"$dir/empty_matches.txt"
     local pairs
-    pairs=$(sqlite3 "$dir/base.db" "SELECT count(*) FROM matches")
+    pairs=$(sql "$dir/base.db" "SELECT count(*) FROM matches")
 
     # Verification time, ours and COLMAP's in turn.
     : >"$dir/ours_s.txt"
@@ -91,7 +101,8 @@ run_set() {
             "$dir/ours_$r.log" >>"$dir/ours_estimate_ms.txt"
         for kind in raw empty; do
             cp "$dir/base.db" "$dir/colmap_$kind.db"
-            sqlite3 "$dir/colmap_$kind.db" "DELETE FROM matches; DELETE FROM two_view_geometries;"
+            sql "$dir/colmap_$kind.db" "DELETE FROM matches"
+            sql "$dir/colmap_$kind.db" "DELETE FROM two_view_geometries"
         done
         wall_seconds "$dir/colmap_verify_$r.log" colmap matches_importer \
             --database_path "$dir/colmap_raw.db" --match_list_path "$dir/raw_matches.txt" \
@@ -106,8 +117,8 @@ run_set() {
     colmap_s=$(median <"$dir/colmap_s.txt")
     colmap_fixed_s=$(median <"$dir/colmap_fixed_s.txt")
     local inliers_ours inliers_colmap
-    inliers_ours=$(sqlite3 "$dir/ours_1.db" "SELECT sum(rows) FROM two_view_geometries")
-    inliers_colmap=$(sqlite3 "$dir/colmap_raw.db" "SELECT sum(rows) FROM two_view_geometries")
+    inliers_ours=$(sql "$dir/ours_1.db" "SELECT sum(rows) FROM two_view_geometries")
+    inliers_colmap=$(sql "$dir/colmap_raw.db" "SELECT sum(rows) FROM two_view_geometries")
 
     # Reconstructions: COLMAP's verification (exhaustive_matcher's) and ours.
     local model

@@ -190,20 +190,20 @@ solutions found, stacked as a 3n x 3 Mat; an empty Mat (and an all-zero mask) wh
 matrix is found.
 @throws cv::Exception for invalid arguments, with a message that names the argument.
 */
-CV_EXPORTS Mat findEssentialMatIter(InputArray points1, InputArray points2, InputArray cameraMatrix,
-                                    int method = RANSAC, double prob = 0.999,
-                                    double threshold = 1.0, int maxIters = 1000,
-                                    OutputArray mask = noArray());
+CV_EXPORTS_W Mat findEssentialMatIter(InputArray points1, InputArray points2,
+                                      InputArray cameraMatrix, int method = RANSAC,
+                                      double prob = 0.999, double threshold = 1.0,
+                                      int maxIters = 1000, OutputArray mask = noArray());
 
 /** @overload Same as above with maxIters = 1000 (OpenCV's older form). */
 CV_EXPORTS Mat findEssentialMatIter(InputArray points1, InputArray points2, InputArray cameraMatrix,
                                     int method, double prob, double threshold, OutputArray mask);
 
 /** @overload The camera matrix is [focal 0 pp.x; 0 focal pp.y; 0 0 1]. */
-CV_EXPORTS Mat findEssentialMatIter(InputArray points1, InputArray points2, double focal = 1.0,
-                                    Point2d pp = Point2d(0, 0), int method = RANSAC,
-                                    double prob = 0.999, double threshold = 1.0,
-                                    int maxIters = 1000, OutputArray mask = noArray());
+CV_EXPORTS_W Mat findEssentialMatIter(InputArray points1, InputArray points2, double focal = 1.0,
+                                      Point2d pp = Point2d(0, 0), int method = RANSAC,
+                                      double prob = 0.999, double threshold = 1.0,
+                                      int maxIters = 1000, OutputArray mask = noArray());
 
 /** @overload Focal/principal-point form with maxIters = 1000 (OpenCV's older form). */
 CV_EXPORTS Mat findEssentialMatIter(InputArray points1, InputArray points2, double focal,
@@ -216,11 +216,11 @@ As in OpenCV, the points are undistorted with their own camera, then mapped thro
 two camera matrices, whose focal lengths also convert the pixel threshold. As cv::undistortPoints,
 this form takes CV_32F or CV_64F points only, N x 2, 2 x N, N x 1 or 1 x N, continuous in memory.
 */
-CV_EXPORTS Mat findEssentialMatIter(InputArray points1, InputArray points2,
-                                    InputArray cameraMatrix1, InputArray distCoeffs1,
-                                    InputArray cameraMatrix2, InputArray distCoeffs2,
-                                    int method = RANSAC, double prob = 0.999,
-                                    double threshold = 1.0, OutputArray mask = noArray());
+CV_EXPORTS_W Mat findEssentialMatIter(InputArray points1, InputArray points2,
+                                      InputArray cameraMatrix1, InputArray distCoeffs1,
+                                      InputArray cameraMatrix2, InputArray distCoeffs2,
+                                      int method = RANSAC, double prob = 0.999,
+                                      double threshold = 1.0, OutputArray mask = noArray());
 
 /** @overload UsacParams form.
 
@@ -232,10 +232,10 @@ StsBadArg naming the field. As in OpenCV, the points are undistorted with each c
 coefficients when there are any (then read as the two-camera form reads them, a view copied first),
 and read as with the USAC flags otherwise; the mask is N x 1.
 */
-CV_EXPORTS Mat findEssentialMatIter(InputArray points1, InputArray points2,
-                                    InputArray cameraMatrix1, InputArray cameraMatrix2,
-                                    InputArray distCoeffs1, InputArray distCoeffs2,
-                                    OutputArray mask, const UsacParams& params);
+CV_EXPORTS_W Mat findEssentialMatIter(InputArray points1, InputArray points2,
+                                      InputArray cameraMatrix1, InputArray cameraMatrix2,
+                                      InputArray dist_coeff1, InputArray dist_coeff2,
+                                      OutputArray mask, const UsacParams& params);
 
 /** @brief The module's own overload: every setting, and an optional report.
 
@@ -252,6 +252,13 @@ flags).
 CV_EXPORTS Mat findEssentialMatIter(InputArray points1, InputArray points2, InputArray cameraMatrix,
                                     const EssentialParams& params, OutputArray mask = noArray(),
                                     EssentialReport* report = nullptr);
+
+/** @overload The report by reference, the form OpenCV's Python generator wraps: in Python,
+`E, mask, report = cv2.essential.findEssentialMatIter(points1, points2, cameraMatrix, params)`.
+*/
+CV_EXPORTS_W Mat findEssentialMatIter(InputArray points1, InputArray points2,
+                                      InputArray cameraMatrix, const EssentialParams& params,
+                                      OutputArray mask, CV_OUT EssentialReport& report);
 
 /** @brief Drop-in replacement for `cv::recoverPose(E, points1, points2, cameraMatrix, R, t, mask)`.
 
@@ -276,14 +283,14 @@ front of both cameras for the chosen pose, 0 elsewhere; if empty, it is created 
 points.
 @return the number of (masked) points in front of both cameras.
 */
-CV_EXPORTS int recoverPose(InputArray E, InputArray points1, InputArray points2,
-                           InputArray cameraMatrix, OutputArray R, OutputArray t,
-                           InputOutputArray mask = noArray());
+CV_EXPORTS_W int recoverPose(InputArray E, InputArray points1, InputArray points2,
+                             InputArray cameraMatrix, OutputArray R, OutputArray t,
+                             InputOutputArray mask = noArray());
 
 /** @overload The camera matrix is [focal 0 pp.x; 0 focal pp.y; 0 0 1]. */
-CV_EXPORTS int recoverPose(InputArray E, InputArray points1, InputArray points2, OutputArray R,
-                           OutputArray t, double focal = 1.0, Point2d pp = Point2d(0, 0),
-                           InputOutputArray mask = noArray());
+CV_EXPORTS_W int recoverPose(InputArray E, InputArray points1, InputArray points2, OutputArray R,
+                             OutputArray t, double focal = 1.0, Point2d pp = Point2d(0, 0),
+                             InputOutputArray mask = noArray());
 
 /** @overload With OpenCV's distance cut and the triangulated points.
 
@@ -299,10 +306,10 @@ StsBadArg (OpenCV then counts no point).
 camera's frame (X2 = R X1 + t): each column the DLT solution of unit norm, with W >= 0 (OpenCV's
 columns are also of unit norm, with the sign its SVD gives).
 */
-CV_EXPORTS int recoverPose(InputArray E, InputArray points1, InputArray points2,
-                           InputArray cameraMatrix, OutputArray R, OutputArray t,
-                           double distanceThresh, InputOutputArray mask = noArray(),
-                           OutputArray triangulatedPoints = noArray());
+CV_EXPORTS_W int recoverPose(InputArray E, InputArray points1, InputArray points2,
+                             InputArray cameraMatrix, OutputArray R, OutputArray t,
+                             double distanceThresh, InputOutputArray mask = noArray(),
+                             OutputArray triangulatedPoints = noArray());
 
 /** @overload Estimates E from two cameras with distortion, then recovers the pose.
 
@@ -330,11 +337,11 @@ exactly five points, of the several solutions the one with the most points in fr
 @param mask output N x 1 CV_8U: 1 at the inliers of E in front of both cameras, 0 elsewhere.
 @return the number of (masked) points in front of both cameras.
 */
-CV_EXPORTS int recoverPose(InputArray points1, InputArray points2, InputArray cameraMatrix1,
-                           InputArray distCoeffs1, InputArray cameraMatrix2, InputArray distCoeffs2,
-                           OutputArray E, OutputArray R, OutputArray t, int method = cv::RANSAC,
-                           double prob = 0.999, double threshold = 1.0,
-                           InputOutputArray mask = noArray());
+CV_EXPORTS_W int recoverPose(InputArray points1, InputArray points2, InputArray cameraMatrix1,
+                             InputArray distCoeffs1, InputArray cameraMatrix2,
+                             InputArray distCoeffs2, OutputArray E, OutputArray R, OutputArray t,
+                             int method = cv::RANSAC, double prob = 0.999, double threshold = 1.0,
+                             InputOutputArray mask = noArray());
 
 //! @}
 

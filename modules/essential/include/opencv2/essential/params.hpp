@@ -257,7 +257,7 @@ struct CV_EXPORTS_W_SIMPLE EssentialReport
     /** Sampson distances computed while scoring hypotheses (all engines but ENGINE_OPENCV, which
     reports 0): N per fully scored hypothesis, fewer after MSAC's early exit or an SPRT rejection.
     */
-    CV_PROP_RW int64 pointsScored;
+    CV_PROP int64 pointsScored; // read-only in Python: OpenCV 4.6 converts int64 to Python only
     CV_PROP_RW int localOptimisations;     //!< LO runs (EssentialParams::loIterations)
     CV_PROP_RW int localOptimisationsKept; //!< LO runs whose polished model lowered the MSAC cost
     CV_PROP_RW int sprtRejections; //!< hypotheses rejected by the SPRT (EssentialParams::sprt)

@@ -41,7 +41,7 @@ cmake_args=(
     -G Ninja
     -DCMAKE_BUILD_TYPE=Release
     -DOPENCV_EXTRA_MODULES_PATH="$repo/modules"
-    -DBUILD_LIST=core,imgproc,imgcodecs,videoio,calib3d,features2d,flann,ts,python3,essential
+    -DBUILD_LIST=core,imgproc,imgcodecs,videoio,calib3d,features2d,flann,ts,python3,python_tests,essential
     -DBUILD_TESTS=ON -DBUILD_PERF_TESTS=ON
     -DBUILD_opencv_apps=OFF -DBUILD_DOCS=OFF -DBUILD_EXAMPLES=OFF -DBUILD_JAVA=OFF
     -DBUILD_opencv_python2=OFF -DBUILD_opencv_python3=ON

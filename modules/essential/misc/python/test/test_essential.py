@@ -86,7 +86,7 @@ class essential_test(NewOpenCVTests):
         self.assertLess(rotation, 0.5)
         self.assertLess(direction, 3.0)
         # OpenCV's distance cut, passed explicitly, with the triangulated points (4 x N).
-        count50, _, _, _, points = cv.essential.recoverPose(E, p1, p2, K, 50.0)
+        count50, _, _, _, points = cv.essential.recoverPose(E, p1, p2, K, distanceThresh=50.0)
         self.assertEqual(points.shape, (4, len(p1)))
         self.assertLessEqual(count50, count)
 

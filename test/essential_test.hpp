@@ -44,7 +44,7 @@ private:
 
 #else
 
-#include "essential_test.hpp"
+#include <gtest/gtest.h>
 
 #endif
 

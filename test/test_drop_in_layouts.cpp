@@ -303,8 +303,8 @@ INSTANTIATE_TEST_SUITE_P(EveryDropInOverload, DropInLayouts,
                                            Overload::FocalMaxIters, Overload::Focal,
                                            Overload::TwoCameras, Overload::Usac,
                                            Overload::UsacDistortion),
-                         [](const ::testing::TestParamInfo<Overload>& info) {
-                             return std::string(overloadName(info.param));
+                         [](const ::testing::TestParamInfo<Overload>& paramInfo) {
+                             return std::string(overloadName(paramInfo.param));
                          });
 
 // Two arrays of different layouts: OpenCV's RANSAC and LMEDS need the same number of channels

@@ -35,8 +35,13 @@ set -euo pipefail
 
 die() {
     echo "fetch_opencv_source.sh: $*" >&2
-    echo "fetch_opencv_source.sh: the ctest entries opencv_calib3d/* need this source; configure" \
-        "with -DESSENTIAL_OPENCV_OWN_TESTS=OFF to leave them out" >&2
+    if [[ ${full:-0} -eq 1 ]]; then
+        echo "fetch_opencv_source.sh: the in-tree build needs this source; scripts/test.sh" \
+            "skips it with ESSENTIAL_INTREE=0" >&2
+    else
+        echo "fetch_opencv_source.sh: the ctest entries opencv_calib3d/* need this source;" \
+            "configure with -DESSENTIAL_OPENCV_OWN_TESTS=OFF to leave them out" >&2
+    fi
     exit 1
 }
 

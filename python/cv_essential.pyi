@@ -1,10 +1,20 @@
-# Type stubs of the cv_essential extension module (python/src/cv_essential_module.cpp), for editors
-# and type checkers. python/tests/test_stubs.py checks that they name exactly the module's API.
-from typing import Callable, List, Optional, Sequence, Tuple, overload
+# Type stubs of the cv_essential extension module (python/src/), for editors and type checkers.
+# python/tests/test_stubs.py checks that they name exactly the module's API.
+from typing import Callable, List, Optional, Sequence, Tuple, Union, overload
 
 import numpy as np
 
 Array = np.ndarray
+# What cv2 4.6 accepts for an array argument (python/README.md, "Point layouts").
+ArrayLike = Union[np.ndarray, float, int, Tuple[float, ...], None]
+
+ENGINE_ADAPTIVE: int
+ENGINE_OPENCV: int
+ENGINE_PREEMPTIVE: int
+DISTANCE_SAMPSON: int
+DISTANCE_SYMMETRIC_EPIPOLAR: int
+BUDGET_CONFIDENCE: int
+BUDGET_OPENCV_TIME: int
 
 class EssentialParams:
     solver: str
@@ -36,70 +46,85 @@ class EssentialReport:
     t: Array
     poseRecovered: bool
     pointsInFront: int
+    rotationOnlyFraction: float
+    homographyFraction: float
     degenerate: bool
     numPoints: int
     inliers: int
     iterations: int
     hypothesesGenerated: int
+    hypothesesConverged: int
+    hypothesesScored: int
+    refineIterations: int
+    pointsScored: int
+    localOptimisations: int
+    localOptimisationsKept: int
+    sprtRejections: int
     planeParallaxKept: bool
+    timeSetupMs: float
+    timeSearchMs: float
+    timeRefineMs: float
+    timePoseMs: float
     timeTotalMs: float
 
 class EssentialPairResult:
-    E: Array
+    E: Optional[Array]
     mask: Array
     report: EssentialReport
     error: str
 
 @overload
-def findEssentialMatIter(points1: Array, points2: Array, cameraMatrix: Array, method: int = ...,
+def findEssentialMatIter(points1: ArrayLike, points2: ArrayLike, cameraMatrix: ArrayLike, method: int = ...,
                          prob: float = ..., threshold: float = ..., maxIters: int = ...,
-                         mask: Optional[Array] = ...) -> Tuple[Array, Optional[Array]]: ...
+                         mask: ArrayLike = ...) -> Tuple[Optional[Array], Optional[Array]]: ...
 @overload
-def findEssentialMatIter(points1: Array, points2: Array, focal: float = ...,
+def findEssentialMatIter(points1: ArrayLike, points2: ArrayLike, focal: float = ...,
                          pp: Tuple[float, float] = ..., method: int = ..., prob: float = ...,
                          threshold: float = ..., maxIters: int = ...,
-                         mask: Optional[Array] = ...) -> Tuple[Array, Optional[Array]]: ...
+                         mask: ArrayLike = ...) -> Tuple[Optional[Array], Optional[Array]]: ...
 @overload
-def findEssentialMatIter(points1: Array, points2: Array, cameraMatrix1: Array,
-                         distCoeffs1: Optional[Array], cameraMatrix2: Array,
+def findEssentialMatIter(points1: ArrayLike, points2: ArrayLike, cameraMatrix1: ArrayLike,
+                         distCoeffs1: Optional[Array], cameraMatrix2: ArrayLike,
                          distCoeffs2: Optional[Array], method: int = ..., prob: float = ...,
                          threshold: float = ...,
-                         mask: Optional[Array] = ...) -> Tuple[Array, Optional[Array]]: ...
+                         mask: ArrayLike = ...) -> Tuple[Optional[Array], Optional[Array]]: ...
 @overload
-def findEssentialMatIter(points1: Array, points2: Array, cameraMatrix1: Array,
-                         cameraMatrix2: Array, dist_coeff1: Optional[Array],
+def findEssentialMatIter(points1: ArrayLike, points2: ArrayLike, cameraMatrix1: ArrayLike,
+                         cameraMatrix2: ArrayLike, dist_coeff1: Optional[Array],
                          dist_coeff2: Optional[Array], params: object,
-                         mask: Optional[Array] = ...) -> Tuple[Array, Optional[Array]]: ...
+                         mask: ArrayLike = ...) -> Tuple[Optional[Array], Optional[Array]]: ...
 @overload
-def findEssentialMatIter(points1: Array, points2: Array, cameraMatrix: Array,
-                         params: EssentialParams, mask: Optional[Array] = ...
-                         ) -> Tuple[Array, Optional[Array], EssentialReport]: ...
+def findEssentialMatIter(points1: ArrayLike, points2: ArrayLike, cameraMatrix: ArrayLike,
+                         params: EssentialParams, mask: ArrayLike = ...
+                         ) -> Tuple[Optional[Array], Optional[Array], EssentialReport]: ...
 
 @overload
-def recoverPose(points1: Array, points2: Array, cameraMatrix1: Array,
-                distCoeffs1: Optional[Array], cameraMatrix2: Array, distCoeffs2: Optional[Array],
-                E: object = ..., R: object = ..., t: object = ..., method: int = ...,
-                prob: float = ..., threshold: float = ..., mask: Optional[Array] = ...
+def recoverPose(points1: ArrayLike, points2: ArrayLike, cameraMatrix1: ArrayLike,
+                distCoeffs1: Optional[Array], cameraMatrix2: ArrayLike, distCoeffs2: Optional[Array],
+                E: ArrayLike = ..., R: ArrayLike = ..., t: ArrayLike = ..., method: int = ...,
+                prob: float = ..., threshold: float = ..., mask: ArrayLike = ...
                 ) -> Tuple[int, Array, Array, Array, Optional[Array]]: ...
 @overload
-def recoverPose(E: Array, points1: Array, points2: Array, cameraMatrix: Array, R: object = ...,
-                t: object = ..., mask: Optional[Array] = ...
+def recoverPose(E: ArrayLike, points1: ArrayLike, points2: ArrayLike, cameraMatrix: ArrayLike, R: ArrayLike = ...,
+                t: ArrayLike = ..., mask: ArrayLike = ...
                 ) -> Tuple[int, Array, Array, Optional[Array]]: ...
 @overload
-def recoverPose(E: Array, points1: Array, points2: Array, cameraMatrix: Array,
-                distanceThresh: float, R: object = ..., t: object = ...,
-                mask: Optional[Array] = ..., triangulatedPoints: object = ...
+def recoverPose(E: ArrayLike, points1: ArrayLike, points2: ArrayLike, cameraMatrix: ArrayLike,
+                distanceThresh: float, R: ArrayLike = ..., t: ArrayLike = ...,
+                mask: ArrayLike = ..., triangulatedPoints: ArrayLike = ...
                 ) -> Tuple[int, Array, Array, Optional[Array], Array]: ...
 @overload
-def recoverPose(E: Array, points1: Array, points2: Array, R: object = ..., t: object = ...,
+def recoverPose(E: ArrayLike, points1: ArrayLike, points2: ArrayLike, R: ArrayLike = ..., t: ArrayLike = ...,
                 focal: float = ..., pp: Tuple[float, float] = ...,
-                mask: Optional[Array] = ...) -> Tuple[int, Array, Array, Optional[Array]]: ...
+                mask: ArrayLike = ...) -> Tuple[int, Array, Array, Optional[Array]]: ...
 
 def listSolvers() -> List[str]: ...
+def isOpenCvLoopAvailable() -> bool: ...
 def registerSolver(name: str, solver: Callable[[Array, Array], Sequence[Array]],
                    sampleSize: int = ..., maxSolutions: int = ...,
                    successRate: float = ...) -> None: ...
-def findEssentialMatBatch(pairs: Sequence[Tuple[Array, Array, Array]],
+def findEssentialMatBatch(pairs: Sequence[Tuple[ArrayLike, ArrayLike, ArrayLike]],
                           params: Optional[EssentialParams] = ..., threads: int = ...,
-                          progress: object = ...) -> List[EssentialPairResult]: ...
+                          progress: object = ..., firstIndex: int = ...
+                          ) -> List[EssentialPairResult]: ...
 def batchPairSeed(seed: int, index: int) -> int: ...

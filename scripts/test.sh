@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # Builds the Release tree (see build.sh) and runs every ctest entry in it; then, unless
 # ESSENTIAL_SANITIZE=0, runs the ctest entries again in the sanitizer tree (clang, AddressSanitizer
-# + UndefinedBehaviorSanitizer, see sanitize.sh; all but the slowest, listed below) and fuzzes for FUZZ_SECONDS (default 60) with a
-# fixed seed (fuzz.sh). Exits non-zero if any stage fails; the last line is "N passed, M failed"
-# over the ctest entries of both trees plus the fuzz run. Extra arguments go to both ctest runs,
+# + UndefinedBehaviorSanitizer, see sanitize.sh; all but the slowest, listed below) and fuzzes each
+# target for FUZZ_SECONDS (default 20) with a fixed seed (fuzz.sh). Exits non-zero if any stage fails; the last line is "N passed, M failed"
+# over the ctest entries of both trees plus one per fuzz target. Extra arguments go to both ctest runs,
 # e.g. scripts/test.sh -R install_and_consume
 # Last, unless ESSENTIAL_INTREE=0, the in-tree stage (scripts/test_in_opencv.sh): OpenCV 4.6 built
 # from Debian's source with the module as an extra module (scripts/build_in_opencv.sh, cached
@@ -66,12 +66,14 @@ if [[ "${ESSENTIAL_SANITIZE:-1}" != 0 ]]; then
     echo "== ctest under AddressSanitizer + UndefinedBehaviorSanitizer (scripts/sanitize.sh) =="
     run_ctest_stage scripts/sanitize.sh -j"${JOBS:-$(nproc)}" -E "$sanitize_slow" "$@"
     echo
-    echo "== libFuzzer, ${FUZZ_SECONDS:-60} s (scripts/fuzz.sh) =="
-    if scripts/fuzz.sh; then
-        passed=$((passed + 1))
-    else
-        failed=$((failed + 1))
-    fi
+    echo "== libFuzzer, ${FUZZ_SECONDS:-20} s per target (scripts/fuzz.sh) =="
+    for target in input_layer solvers engines; do
+        if scripts/fuzz.sh "$target"; then
+            passed=$((passed + 1))
+        else
+            failed=$((failed + 1))
+        fi
+    done
 fi
 
 if [[ "${ESSENTIAL_INTREE:-1}" != 0 ]]; then

@@ -90,6 +90,28 @@ TEST(Batch, ProgressExceptionReachesTheCallerAndBadThreadsRaise)
     EXPECT_THROW(cv::essential::findEssentialMatBatch(pairs, cv::essential::EssentialParams(), -1),
                  cv::Exception);
     EXPECT_TRUE(cv::essential::findEssentialMatBatch({}, cv::essential::EssentialParams()).empty());
+    EXPECT_THROW(cv::essential::findEssentialMatBatch(pairs, cv::essential::EssentialParams(), 1,
+                                                      cv::essential::BatchProgress(), -1),
+                 cv::Exception);
+}
+
+TEST(Batch, PartsWithTheirFirstIndexGiveTheWholeBatch)
+{
+    // A list cut in two parts, each estimated with the index of its first pair, gives the results
+    // of one batch of the whole list (how several processes share a list of pairs).
+    const std::vector<cv::essential::EssentialPair> pairs = makePairs(6);
+    const cv::essential::EssentialParams params;
+    const auto whole = cv::essential::findEssentialMatBatch(pairs, params, 2);
+    const std::vector<cv::essential::EssentialPair> tail(pairs.begin() + 4, pairs.end());
+    const auto part =
+        cv::essential::findEssentialMatBatch(tail, params, 1, cv::essential::BatchProgress(), 4);
+    ASSERT_EQ(part.size(), 2u);
+    for (size_t k = 0; k < part.size(); ++k) {
+        SCOPED_TRACE(k);
+        ASSERT_FALSE(part[k].E.empty());
+        EXPECT_EQ(cv::norm(part[k].E, whole[4 + k].E, cv::NORM_INF), 0.0);
+        EXPECT_EQ(cv::norm(part[k].mask, whole[4 + k].mask, cv::NORM_INF), 0.0);
+    }
 }
 
 } // namespace

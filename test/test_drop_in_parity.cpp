@@ -12,6 +12,7 @@
 #include <opencv2/calib3d.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <functional>
 #include <string>
 #include <vector>
@@ -305,6 +306,36 @@ TEST(DropInParity, MaskOutputKinds)
     EXPECT_EQ(wrong.cols, 1);
     EXPECT_EQ(wrong.type(), CV_8U);
     EXPECT_EQ(cv::countNonZero(wrong != maskMat), 0);
+}
+
+TEST(DropInParity, IntegerCameraAndDistortion)
+{
+    // cv::findEssentialMat converts a camera matrix and distortion coefficients of any integer
+    // depth; so does the drop-in: the same result as with the same values in CV_64F.
+    const ParityCase c = makeCase(104);
+    cv::Mat Kd;
+    cv::Mat(c.scene.K).convertTo(Kd, CV_64F);
+    for (int k = 0; k < 9; ++k)
+        Kd.at<double>(k / 3, k % 3) = std::round(Kd.at<double>(k / 3, k % 3));
+    cv::Mat Ki, Ku;
+    Kd.convertTo(Ki, CV_32S);
+    Kd.convertTo(Ku, CV_16U);
+    const cv::Mat Ed = cv::essential::findEssentialMatIter(c.scene.px1, c.scene.px2, Kd);
+    EXPECT_EQ(cv::norm(cv::essential::findEssentialMatIter(c.scene.px1, c.scene.px2, Ki), Ed,
+                       cv::NORM_INF),
+              0.0);
+    EXPECT_EQ(cv::norm(cv::essential::findEssentialMatIter(c.scene.px1, c.scene.px2, Ku), Ed,
+                       cv::NORM_INF),
+              0.0);
+    const cv::Mat zd = cv::Mat::zeros(1, 5, CV_64F), zi = cv::Mat::zeros(1, 5, CV_32S);
+    const cv::Mat Edist =
+        cv::essential::findEssentialMatIter(c.scene.px1, c.scene.px2, Kd, zd, Kd, zd);
+    EXPECT_EQ(
+        cv::norm(cv::essential::findEssentialMatIter(c.scene.px1, c.scene.px2, Ki, zi, Ki, zi),
+                 Edist, cv::NORM_INF),
+        0.0);
+    cv::Mat R, t;
+    EXPECT_GT(cv::essential::recoverPose(Ed, c.scene.px1, c.scene.px2, Ki, R, t), 0);
 }
 
 TEST(DropInParity, DefaultArgumentsMatchOpenCVDefaults)

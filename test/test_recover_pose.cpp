@@ -321,6 +321,23 @@ TEST(RecoverPose, MaskAllZeroGivesNoPoints)
     EXPECT_EQ(mask.rows, N);
 }
 
+TEST(RecoverPose, ZeroEssentialMatrixGivesTheNoPoseAnswer)
+{
+    // Found by the engines fuzz target (fuzz/regression/engines/): E = 0 cannot be decomposed.
+    // Every form answers 0 points with R = I and t = 0; the distanceThresh form also leaves the
+    // triangulated points empty (essential.hpp), rather than points of an arbitrary pose.
+    const SyntheticScene s = makeScene(inlierScene(0.0), 55);
+    const cv::Mat zero = cv::Mat::zeros(3, 3, CV_64F);
+    cv::Mat R, t, X, mask;
+    EXPECT_EQ(cv::essential::recoverPose(zero, s.px1, s.px2, cv::Mat(s.K), R, t, 50.0, mask, X), 0);
+    EXPECT_EQ(cv::norm(R, cv::Mat::eye(3, 3, CV_64F), cv::NORM_INF), 0.0);
+    EXPECT_EQ(cv::norm(t), 0.0);
+    EXPECT_TRUE(X.empty());
+    EXPECT_EQ(cv::countNonZero(mask), 0);
+    EXPECT_EQ(cv::essential::recoverPose(zero, s.px1, s.px2, cv::Mat(s.K), R, t), 0);
+    EXPECT_EQ(cv::norm(t), 0.0);
+}
+
 TEST(RecoverPose, RowVectorMaskAccepted)
 {
     const SyntheticScene s = makeScene(inlierScene(0.0), 54);

@@ -211,3 +211,7 @@ def test_batch_is_deterministic_and_reports_bad_pairs():
         cv_essential.EssentialParams().seed, 3))
     E, _, _ = cv_essential.findEssentialMatIter(*pairs[3], params)
     assert np.array_equal(E, one[3].E)
+    # A part of the list with the index of its first pair gives the whole batch's results.
+    part = cv_essential.findEssentialMatBatch(pairs[3:5], threads=1, firstIndex=3)
+    assert all(np.array_equal(a.E, b.E) for a, b in zip(part, one[3:5]))
+    assert one[6].E is None and one[6].report.numPoints == 0

@@ -46,13 +46,11 @@ def synthetic_pairs(count, points=300, seed=1):
 
 
 def estimate_partition(first, pairs, seed, threads=0):
-    """The batch of one partition; pair k is the pair first + k of the whole list."""
-    results = []
-    for k, (p1, p2, K) in enumerate(pairs):
-        params = cv_essential.EssentialParams(seed=cv_essential.batchPairSeed(seed, first + k))
-        E, mask, report = cv_essential.findEssentialMatIter(p1, p2, K, params)
-        results.append((E, report.inliers))
-    return results
+    """The batch of one partition on the worker's threads; firstIndex gives pair k the seed of
+    pair first + k of the whole list, so the partitions together equal one batch."""
+    out = cv_essential.findEssentialMatBatch(pairs, cv_essential.EssentialParams(seed=seed),
+                                             threads=threads, firstIndex=first)
+    return [(r.E, r.report.inliers) for r in out]
 
 
 def estimate_locally(pairs, seed):

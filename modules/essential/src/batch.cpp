@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <atomic>
 #include <exception>
+#include <limits>
 #include <mutex>
 #include <thread>
 
@@ -26,11 +27,15 @@ uint64 batchPairSeed(uint64 seed, int index)
 
 std::vector<EssentialPairResult> findEssentialMatBatch(const std::vector<EssentialPair>& pairs,
                                                        const EssentialParams& params, int threads,
-                                                       const BatchProgress& progress)
+                                                       const BatchProgress& progress,
+                                                       int firstIndex)
 {
     const int total = static_cast<int>(pairs.size());
     std::vector<EssentialPairResult> results(pairs.size());
     if (threads < 0) CV_Error(Error::StsBadArg, "threads must be >= 0 (0: cv::getNumThreads())");
+    if (firstIndex < 0 || firstIndex > std::numeric_limits<int>::max() - total)
+        CV_Error(Error::StsBadArg,
+                 "firstIndex must be >= 0 and firstIndex + pairs.size() fit an int");
     const int workers = std::max(1, std::min(total, threads > 0 ? threads : getNumThreads()));
     std::atomic<int> next(0), done(0);
     std::mutex progressMutex;
@@ -40,7 +45,7 @@ std::vector<EssentialPairResult> findEssentialMatBatch(const std::vector<Essenti
             const int i = next.fetch_add(1);
             if (i >= total) return;
             EssentialParams p = params;
-            p.seed = batchPairSeed(params.seed, i);
+            p.seed = batchPairSeed(params.seed, firstIndex + i);
             EssentialPairResult& r = results[static_cast<size_t>(i)];
             try {
                 r.E = findEssentialMatIter(pairs[i].points1, pairs[i].points2,

@@ -509,8 +509,8 @@ void checkDistortion(InputArray d, const char* name)
     if (d.empty()) return;
     Mat m = d.getMat();
     const size_t total = m.total() * static_cast<size_t>(m.channels());
-    if (m.depth() != CV_32F && m.depth() != CV_64F)
-        CV_Error(Error::StsBadArg, std::string(name) + " must be CV_32F or CV_64F");
+    // Any integer or floating depth, as cv::undistortPoints converts it (CV_16F aside).
+    if (m.depth() == CV_16F) CV_Error(Error::StsBadArg, std::string(name) + " must not be CV_16F");
     if (total != 4 && total != 5 && total != 8 && total != 12 && total != 14)
         CV_Error(Error::StsBadArg, std::string(name) +
                                        " must have 4, 5, 8, 12 or 14 coefficients (got " +

@@ -38,7 +38,8 @@ Matx33d readCameraMatrix(InputArray cameraMatrix, const char* name)
     if (m.rows != 3 || m.cols != 3 || m.channels() != 1)
         badArg(arg + " must be a 3 x 3 one-channel matrix (got " + std::to_string(m.rows) + " x " +
                std::to_string(m.cols) + " with " + std::to_string(m.channels()) + " channels)");
-    if (m.depth() != CV_32F && m.depth() != CV_64F) badArg(arg + " must be CV_32F or CV_64F");
+    // Any integer or floating depth, as cv::findEssentialMat converts it (CV_16F aside).
+    if (m.depth() == CV_16F) badArg(arg + " must not be CV_16F");
     Matx33d K;
     Mat(m).convertTo(Mat(3, 3, CV_64F, K.val), CV_64F);
     for (int i = 0; i < 9; ++i)

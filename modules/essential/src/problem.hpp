@@ -33,8 +33,8 @@ struct Problem
 /** Checks that the two point sets have the same size and at least `minPoints` points. */
 void checkPointSets(const std::vector<Point2d>& p1, const std::vector<Point2d>& p2, int minPoints);
 
-/** Reads a 3 x 3 camera matrix (CV_32F or CV_64F, finite, fx and fy positive, last row 0 0 1,
-invertible). */
+/** Reads a 3 x 3 camera matrix (any depth but CV_16F, as cv::findEssentialMat reads it; finite, fx
+and fy positive, last row 0 0 1, invertible). */
 Matx33d readCameraMatrix(InputArray cameraMatrix, const char* name);
 
 /** The camera matrix of the focal/principal-point overloads; checks focal (finite, positive). */

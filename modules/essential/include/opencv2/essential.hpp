@@ -312,7 +312,8 @@ candidate pose, as OpenCV's does.
 StsBadArg (OpenCV then counts no point).
 @param triangulatedPoints output 4 x N CV_64F homogeneous points of the chosen pose, in the first
 camera's frame (X2 = R X1 + t): each column the DLT solution of unit norm, with W >= 0 (OpenCV's
-columns are also of unit norm, with the sign its SVD gives).
+columns are also of unit norm, with the sign its SVD gives). When E cannot be decomposed (the zero
+matrix) the call returns 0 with R = I, t = 0 and triangulatedPoints empty.
 @sa cv::recoverPose
 */
 CV_EXPORTS_W int recoverPose(InputArray E, InputArray points1, InputArray points2,

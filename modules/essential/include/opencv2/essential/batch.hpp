@@ -48,12 +48,15 @@ index, so the results are the same at any thread count and in any order of execu
 @param params the settings of every estimate (its seed is the batch's).
 @param threads worker threads; 0 (default): cv::getNumThreads(). Each pair runs on one thread.
 @param progress optional callback after each pair.
+@param firstIndex the index of pairs[0] in a larger list: pair i gets the seed of index
+firstIndex + i, so a list cut into parts (for several processes or machines) and estimated part by
+part gives the results of one batch of the whole list.
 @return one result per pair, in the order of `pairs`.
 */
 CV_EXPORTS std::vector<EssentialPairResult>
 findEssentialMatBatch(const std::vector<EssentialPair>& pairs,
                       const EssentialParams& params = EssentialParams(), int threads = 0,
-                      const BatchProgress& progress = BatchProgress());
+                      const BatchProgress& progress = BatchProgress(), int firstIndex = 0);
 
 /** The seed findEssentialMatBatch() gives pair `index` for the batch seed `seed` (SplitMix64 of
 their combination): the same estimate as one findEssentialMatIter() call with this seed. */

@@ -47,6 +47,12 @@ public:
     @param rng random source, for solvers that start from random initial values.
     @param solutions room for `maxSolutions()` matrices; the first n are written.
     @return n, the number of essential matrices written (0 when the solver gives up).
+
+    The built-in solvers return, for any input (degenerate, non-finite or of any scale included)
+    and in bounded time, finite essential matrices scaled as \f$E = [t]_\times R\f$ with a unit
+    \f$t\f$ (Frobenius norm \f$\sqrt 2\f$), whose singular values are \f$(s, s, 0)\f$ within
+    \f$10^{-6} s\f$; the solver fuzz target (fuzz/fuzz_solvers.cpp) checks it. The engines need only
+    finite, non-zero matrices (any scale) from a registered solver.
     */
     virtual int solve(const Point2d* x1, const Point2d* x2, RNG& rng, Matx33d* solutions) = 0;
 

@@ -70,24 +70,28 @@ findEssentialMatIter()).
 The defaults are those of the drop-in overloads, which behave like `cv::findEssentialMat` with
 `method = RANSAC`, `prob = 0.999`, `threshold = 1.0`, `maxIters = 1000`.
 */
-struct CV_EXPORTS_W_SIMPLE EssentialParams
+// OpenCV's Python generator (modules/python/src2/hdr_parser.py of OpenCV 4.6, inside an OpenCV
+// build) cannot read member initialisers: it would take `int maxIters = 1000;` for a field named
+// "maxIters = 1000". It skips `#ifndef OPENCV_BINDING_PARSER` blocks and reads the declaration in
+// the `#ifdef OPENCV_BINDING_PARSER` block instead, which the compiler never sees: the same struct
+// with the binding macros and the fields without their defaults. Keep the two field lists equal
+// (modules/essential/misc/python/test/test_essential.py checks that cv2.essential has them all).
+#ifndef OPENCV_BINDING_PARSER
+struct CV_EXPORTS EssentialParams
 {
-    //! The defaults listed with each field (those of the drop-in overloads).
-    CV_WRAP EssentialParams();
-
     /** Name of a registered solver (see listSolvers()) or a composite such as "gn+nister" (see
     createSolver()). The default draws hypotheses from gn and nister in turn, the combination the
     paper's conclusion suggests: on the synthetic protocol it was the most reliable per unit time at
     30% inliers (docs/SOLVERS.md, "Choosing the default"). Under tight time budgets on video, "gn"
     alone did best on the rail sequences. */
-    CV_PROP_RW std::string solver; //!< Default "gn+nister".
+    std::string solver = "gn+nister";
 
     /** Scoring: `cv::RANSAC` (adaptive MSAC, truncated Sampson error) or `cv::LMEDS` (least median
     of squared Sampson errors; the threshold is then derived from the data, as OpenCV does). */
-    CV_PROP_RW int method; //!< Default RANSAC.
+    int method = RANSAC;
 
     /** The search loop: ENGINE_ADAPTIVE (default), ENGINE_PREEMPTIVE or ENGINE_OPENCV. */
-    CV_PROP_RW int engine; //!< Default ENGINE_ADAPTIVE.
+    int engine = ENGINE_ADAPTIVE;
 
     /** Time budget of the whole call in milliseconds; 0 (default) or +inf for none. With a budget
     the search returns the best model found when the time left is what the final refinement needs
@@ -95,28 +99,28 @@ struct CV_EXPORTS_W_SIMPLE EssentialParams
     positive finite value is a budget; one beyond the steady clock's range (about 9e12 ms) never
     runs out. Negative values and NaN raise StsBadArg. Honoured by ENGINE_ADAPTIVE and
     ENGINE_PREEMPTIVE; ENGINE_OPENCV raises StsNotImplemented for a budget. */
-    CV_PROP_RW double timeBudgetMs; //!< Default 0.
+    double timeBudgetMs = 0;
 
     /** ENGINE_PREEMPTIVE: number M of hypotheses generated up front. 0 (default): chosen at run
     time to fill timeBudgetMs, or 500 without a budget. */
-    CV_PROP_RW int preemptiveHypotheses; //!< Default 0.
+    int preemptiveHypotheses = 0;
 
     /** ENGINE_PREEMPTIVE: block size B, the points scored between two halvings. */
-    CV_PROP_RW int preemptiveBlockSize; //!< Default 100.
+    int preemptiveBlockSize = 100;
 
     /** Required probability, in (0, 1), that at least one sample was outlier-free and solved. */
-    CV_PROP_RW double confidence; //!< Default 0.999.
+    double confidence = 0.999;
 
     /** Inlier threshold in pixels on `distance`, with pixels converted to normalised units by the
     mean focal length (fx + fy) / 2, exactly as `cv::findEssentialMat`. Must be > 0. */
-    CV_PROP_RW double threshold; //!< Default 1.0.
+    double threshold = 1.0;
 
     /** The distance `threshold` applies to: DISTANCE_SAMPSON (default, as cv::findEssentialMat with
     RANSAC or LMEDS) or DISTANCE_SYMMETRIC_EPIPOLAR (as OpenCV's USAC; the drop-in overloads select
     it for the USAC flags and the UsacParams form). Scoring, SPRT, local optimisation's inlier sets,
     the support test and the mask use it; LMEDS and the final refinement's robust cost always use
     the Sampson distance. */
-    CV_PROP_RW EssentialDistance distance; //!< Default DISTANCE_SAMPSON.
+    EssentialDistance distance = DISTANCE_SAMPSON;
 
     /** Iteration cap in OpenCV's units. Must be > 0. OpenCV's cap counts samples of a direct
     5-point solver, each of which solves an outlier-free sample; an iterative solver that reaches
@@ -126,14 +130,14 @@ struct CV_EXPORTS_W_SIMPLE EssentialParams
     Those samples are still several times cheaper than OpenCV's (see docs/SOLVERS.md). With
     sampleBudget = BUDGET_OPENCV_TIME (the default) the cap is raised to the samples that fit in
     three quarters of OpenCV's time for maxIters iterations. */
-    CV_PROP_RW int maxIters; //!< Default 1000.
+    int maxIters = 1000;
 
     /** The sample cap of ENGINE_ADAPTIVE with method RANSAC: BUDGET_OPENCV_TIME (default) or
     BUDGET_CONFIDENCE (EssentialSampleBudget). LMEDS draws OpenCV's fixed number of samples, and
     ENGINE_PREEMPTIVE and ENGINE_OPENCV have their own budgets; they ignore it. Default
     BUDGET_OPENCV_TIME, measured on hard sets (few inliers, a dominant plane, repeated structure,
     docs/HARD_PAIRS.md). */
-    CV_PROP_RW int sampleBudget; //!< Default BUDGET_OPENCV_TIME.
+    int sampleBudget = BUDGET_OPENCV_TIME;
 
     /** With BUDGET_OPENCV_TIME and the uniform sampler: once the samples pass the confidence cap
     (maxIters / s, where the stopping rule would have ended the search on data it finds hard),
@@ -142,7 +146,7 @@ struct CV_EXPORTS_W_SIMPLE EssentialParams
     so local samples are clean far more often when inliers are few; easy data stop before the cap
     and never pay for the neighbourhood grid. Default on, measured on the hard sets
     (docs/HARD_PAIRS.md). */
-    CV_PROP_RW bool budgetLocalSamples; //!< Default true.
+    bool budgetLocalSamples = true;
 
     /** After the search (ENGINE_ADAPTIVE with RANSAC), check whether the winner's inliers are
     dominated by one plane (a homography fitted to them explains at least half) and, if so, search
@@ -151,7 +155,7 @@ struct CV_EXPORTS_W_SIMPLE EssentialParams
     the plane alone supports (the twin of the homography decomposition or a model degrees off); the
     check costs nothing when no plane dominates and about 1 ms otherwise. Default on, measured on
     hard sets (docs/HARD_PAIRS.md). */
-    CV_PROP_RW bool planeParallax; //!< Default true.
+    bool planeParallax = true;
 
     /** Local optimisation (LO) in the adaptive MSAC engine: each time a hypothesis becomes the
     best so far, it is polished by this many IRLS iterations (Levenberg-Marquardt on
@@ -171,11 +175,11 @@ struct CV_EXPORTS_W_SIMPLE EssentialParams
     within 3 thresholds of it, solved and scored like the search's, once 50 samples have been
     drawn); on 300 problems this raised the reliability at 30% inliers from 0.977 to 0.993 and at
     25% from 0.810 to 0.957 with the same sample cap (docs/PERFORMANCE.md). */
-    CV_PROP_RW int loIterations; //!< Default 5.
+    int loIterations = 5;
 
     /** LO on a random subset of this many of the model's inliers; 0 (default): on all of them.
     Must be 0 or >= 5 (IRLS fits five degrees of freedom). */
-    CV_PROP_RW int loSampleSize; //!< Default 0.
+    int loSampleSize = 0;
 
     /** How samples are drawn:
     - `cv::SAMPLING_UNIFORM` (default);
@@ -189,7 +193,7 @@ struct CV_EXPORTS_W_SIMPLE EssentialParams
       need ENGINE_ADAPTIVE with RANSAC.
     Other engines raise StsNotImplemented for a sampler they do not support. docs/HARD_PAIRS.md
     measures each on hard data. */
-    CV_PROP_RW int sampler; //!< Default SAMPLING_UNIFORM.
+    int sampler = SAMPLING_UNIFORM;
 
     /** Verify hypotheses with Wald's sequential probability ratio test (Matas and Chum, R-RANSAC
     with SPRT): the points are checked in a random order and a hypothesis is rejected as soon as
@@ -203,74 +207,131 @@ struct CV_EXPORTS_W_SIMPLE EssentialParams
     of 911 at 30%, the median call time goes from 4.1 to 2.9 ms and from 12.7 to 7.4 ms, and the
     reliability is unchanged (1.000, 0.957); on the Leuven pair the inliers are the same for every
     seed in about half the time. */
-    CV_PROP_RW bool sprt; //!< Default true.
+    bool sprt = true;
 
     /** Seed of the random generator: the same seed and input give the same result. */
-    CV_PROP_RW uint64 seed; //!< Default 0x6573736e7469616cULL.
+    uint64 seed = 0x6573736e7469616cULL;
 
     /** Refine the best hypothesis by iteratively reweighted least squares (IRLS) with
     Levenberg-Marquardt in the 5-DOF parameterisation (Tukey's biweight at a scale that follows the
     estimated noise, on the points within max(2 thresholds, 4 sigmas) of it and in front of both
     cameras; docs/ACCURACY.md), then recompute the inlier mask. */
-    CV_PROP_RW bool refine; //!< Default true.
+    bool refine = true;
 
     /** When a report is requested: also decompose E into R and t (with the cheirality test of
     recoverPose()) and store them in the report. */
-    CV_PROP_RW bool recoverPose; //!< Default true.
+    bool recoverPose = true;
 };
+#endif
+#ifdef OPENCV_BINDING_PARSER
+struct CV_EXPORTS_W_SIMPLE EssentialParams
+{
+    CV_WRAP EssentialParams();
+    CV_PROP_RW std::string solver;
+    CV_PROP_RW int method;
+    CV_PROP_RW int engine;
+    CV_PROP_RW double timeBudgetMs;
+    CV_PROP_RW int preemptiveHypotheses;
+    CV_PROP_RW int preemptiveBlockSize;
+    CV_PROP_RW double confidence;
+    CV_PROP_RW double threshold;
+    CV_PROP_RW EssentialDistance distance;
+    CV_PROP_RW int maxIters;
+    CV_PROP_RW int sampleBudget;
+    CV_PROP_RW bool budgetLocalSamples;
+    CV_PROP_RW bool planeParallax;
+    CV_PROP_RW int loIterations;
+    CV_PROP_RW int loSampleSize;
+    CV_PROP_RW int sampler;
+    CV_PROP_RW bool sprt;
+    CV_PROP_RW uint64 seed;
+    CV_PROP_RW bool refine;
+    CV_PROP_RW bool recoverPose;
+};
+#endif
 
 /** @brief What one estimate did: the pose, the counts and the time spent per stage. */
-struct CV_EXPORTS_W_SIMPLE EssentialReport
+#ifndef OPENCV_BINDING_PARSER
+struct CV_EXPORTS EssentialReport
 {
-    //! An empty report: no estimate, E = 0, R = I, t = 0, every count and time 0.
-    CV_WRAP EssentialReport();
-
-    CV_PROP_RW bool success;       //!< an essential matrix was found
-    CV_PROP_RW Matx33d E;          //!< the returned essential matrix (unit Frobenius norm)
-    CV_PROP_RW Matx33d R;          //!< rotation from view 1 to view 2 (if poseRecovered)
-    CV_PROP_RW Vec3d t;            //!< unit translation, X2 = R X1 + s t (if poseRecovered)
-    CV_PROP_RW bool poseRecovered; //!< R and t were computed
-    CV_PROP_RW int pointsInFront;  //!< inliers in front of both cameras for (R, t)
+    bool success = false;         //!< an essential matrix was found
+    Matx33d E = Matx33d::zeros(); //!< the returned essential matrix (unit Frobenius norm)
+    Matx33d R = Matx33d::eye();   //!< rotation from view 1 to view 2 (if poseRecovered)
+    Vec3d t = Vec3d(0, 0, 0);     //!< unit translation, X2 = R X1 + s t (if poseRecovered)
+    bool poseRecovered = false;   //!< R and t were computed
+    int pointsInFront = 0;        //!< inliers in front of both cameras for (R, t)
 
     /** Fraction of the inliers that a rotation alone explains: their position in image 2 is
     within twice the threshold of the rotated ray of image 1 (rotation fitted to all inliers).
     Set when an essential matrix was found. */
-    CV_PROP_RW double rotationOnlyFraction;
+    double rotationOnlyFraction = 0;
     /** Fraction of the inliers that a homography explains (fitted to all inliers by DLT; same
     distance). Set when an essential matrix was found. */
-    CV_PROP_RW double homographyFraction;
+    double homographyFraction = 0;
     /** The inliers do not determine the pose: rotationOnlyFraction >= 0.9 (no parallax: pure
     rotation, a baseline too short for the scene's depth; every E = [t]x R with the right R fits,
     so t is noise, R is still right) or homographyFraction >= 0.9 (a planar scene or all points at
     one depth: two poses fit equally well and the estimate may be the wrong one). Treat the result
     as a rotation, or a homography, not as a pose. See docs/ROBUSTNESS.md, "Degenerate scenes". */
-    CV_PROP_RW bool degenerate;
+    bool degenerate = false;
 
-    CV_PROP_RW int numPoints;  //!< correspondences given
-    CV_PROP_RW int inliers;    //!< non-zero entries of the returned mask
-    CV_PROP_RW int iterations; //!< samples drawn (EssentialParams::maxIters, sampleBudget)
-    //! solver calls made (one per sample, plus LO's inner samples)
-    CV_PROP_RW int hypothesesGenerated;
-    CV_PROP_RW int hypothesesConverged; //!< essential matrices the solver returned
-    CV_PROP_RW int hypothesesScored;    //!< essential matrices scored against the data
-    CV_PROP_RW int refineIterations;    //!< IRLS iterations of the final refinement
+    int numPoints = 0;           //!< correspondences given
+    int inliers = 0;             //!< non-zero entries of the returned mask
+    int iterations = 0;          //!< samples drawn (EssentialParams::maxIters, sampleBudget)
+    int hypothesesGenerated = 0; //!< solver calls made (one per sample, plus LO's inner samples)
+    int hypothesesConverged = 0; //!< essential matrices the solver returned
+    int hypothesesScored = 0;    //!< essential matrices scored against the data
+    int refineIterations = 0;    //!< IRLS iterations of the final refinement
     /** Sampson distances computed while scoring hypotheses (all engines but ENGINE_OPENCV, which
     reports 0): N per fully scored hypothesis, fewer after MSAC's early exit or an SPRT rejection.
     */
-    CV_PROP int64 pointsScored; // read-only in Python: OpenCV 4.6 converts int64 to Python only
-    CV_PROP_RW int localOptimisations;     //!< LO runs (EssentialParams::loIterations)
-    CV_PROP_RW int localOptimisationsKept; //!< LO runs whose polished model lowered the MSAC cost
-    CV_PROP_RW int sprtRejections; //!< hypotheses rejected by the SPRT (EssentialParams::sprt)
+    int64 pointsScored = 0;
+    int localOptimisations = 0;     //!< LO runs (EssentialParams::loIterations)
+    int localOptimisationsKept = 0; //!< LO runs whose polished model lowered the MSAC cost
+    int sprtRejections = 0;         //!< hypotheses rejected by the SPRT (EssentialParams::sprt)
     /** The plane-and-parallax check (EssentialParams::planeParallax) found the search's winner
     dominated by a plane and replaced it with a better-supported model. */
-    CV_PROP_RW bool planeParallaxKept;
+    bool planeParallaxKept = false;
 
-    CV_PROP_RW double timeSetupMs;  //!< input checks and normalisation
-    CV_PROP_RW double timeSearchMs; //!< sampling, solving and scoring
-    CV_PROP_RW double timeRefineMs; //!< final IRLS refinement and mask
-    CV_PROP_RW double timePoseMs;   //!< decomposition into R and t
-    CV_PROP_RW double timeTotalMs;  //!< the whole call
+    double timeSetupMs = 0;  //!< input checks and normalisation
+    double timeSearchMs = 0; //!< sampling, solving and scoring
+    double timeRefineMs = 0; //!< final IRLS refinement and mask
+    double timePoseMs = 0;   //!< decomposition into R and t
+    double timeTotalMs = 0;  //!< the whole call
 };
+#endif
+#ifdef OPENCV_BINDING_PARSER
+struct CV_EXPORTS_W_SIMPLE EssentialReport
+{
+    CV_WRAP EssentialReport();
+    CV_PROP_RW bool success;
+    CV_PROP_RW Matx33d E;
+    CV_PROP_RW Matx33d R;
+    CV_PROP_RW Vec3d t;
+    CV_PROP_RW bool poseRecovered;
+    CV_PROP_RW int pointsInFront;
+    CV_PROP_RW double rotationOnlyFraction;
+    CV_PROP_RW double homographyFraction;
+    CV_PROP_RW bool degenerate;
+    CV_PROP_RW int numPoints;
+    CV_PROP_RW int inliers;
+    CV_PROP_RW int iterations;
+    CV_PROP_RW int hypothesesGenerated;
+    CV_PROP_RW int hypothesesConverged;
+    CV_PROP_RW int hypothesesScored;
+    CV_PROP_RW int refineIterations;
+    CV_PROP int64 pointsScored;
+    CV_PROP_RW int localOptimisations;
+    CV_PROP_RW int localOptimisationsKept;
+    CV_PROP_RW int sprtRejections;
+    CV_PROP_RW bool planeParallaxKept;
+    CV_PROP_RW double timeSetupMs;
+    CV_PROP_RW double timeSearchMs;
+    CV_PROP_RW double timeRefineMs;
+    CV_PROP_RW double timePoseMs;
+    CV_PROP_RW double timeTotalMs;
+};
+#endif
 
 //! @}
 

@@ -8,6 +8,9 @@
 # those of the standalone package cv_essential (python/cv_essential.pyi).
 from __future__ import print_function
 
+import os
+import re
+
 import numpy as np
 import cv2 as cv
 
@@ -38,7 +41,32 @@ def pose_errors_deg(R_est, t_est, R, t):
     return rotation, direction
 
 
+PARAMS_HPP = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..', '..', 'include',
+                          'opencv2', 'essential', 'params.hpp')
+
+
+def cpp_fields(struct):
+    """Data members of the C++ declaration of `struct` (the one the compiler sees) in params.hpp."""
+    with open(PARAMS_HPP) as f:
+        text = f.read()
+    body = text[text.index('struct CV_EXPORTS %s\n' % struct):]
+    body = re.sub(r'/\*.*?\*/', '', body[body.index('{') + 1:body.index('\n};')], flags=re.S)
+    return {m.group(1) for m in re.finditer(r'^\s+[\w:<>]+\s+(\w+)\s*=', body, flags=re.M)}
+
+
 class essential_test(NewOpenCVTests):
+
+    def test_structs_have_every_cpp_field(self):
+        # params.hpp declares both structs twice: for the compiler (with defaults) and for OpenCV's
+        # generator (with the binding macros); the bindings must carry every C++ field.
+        params = cv.essential.EssentialParams()
+        report = cv.essential.EssentialReport()
+        for struct, obj, least in (('EssentialParams', params, 20), ('EssentialReport', report, 25)):
+            fields = cpp_fields(struct)
+            self.assertGreaterEqual(len(fields), least)
+            self.assertEqual(fields, {n for n in dir(obj) if not n.startswith('_')})
+        self.assertEqual(params.seed, 0x6573736e7469616c)
+        self.assertEqual(params.sampleBudget, cv.essential.BUDGET_OPENCV_TIME)
 
     def test_drop_in_matches_cv_findEssentialMat(self):
         p1, p2, K, R, t = two_view_scene()

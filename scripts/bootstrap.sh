@@ -10,7 +10,8 @@ packages=(cmake g++ make python3 libopencv-dev libeigen3-dev libgtest-dev libben
     clang libclang-rt-14-dev # clang and its sanitizer / libFuzzer runtimes: sanitize.sh, fuzz.sh
     python3-dev pybind11-dev python3-numpy python3-opencv python3-pytest # the Python module (python/)
     python3-dask python3-distributed python3-tqdm # its batch example on a cluster, progress bar
-    colmap libsqlite3-dev) # essential_colmap on COLMAP's database, its tests (docs/COLMAP.md)
+    colmap libsqlite3-dev # essential_colmap on COLMAP's database, its tests (docs/COLMAP.md)
+    ninja-build zlib1g-dev liblapack-dev) # OpenCV 4.6 built with the module in-tree (build_in_opencv.sh)
 
 missing=()
 for pkg in "${packages[@]}"; do

@@ -6,6 +6,10 @@
 # modules/ts includes, and LICENSE.
 #
 #   scripts/fetch_opencv_source.sh DEST
+#   scripts/fetch_opencv_source.sh --full DEST
+#
+# With --full, DEST gets the whole upstream tree with every Debian patch applied (what
+# scripts/build_in_opencv.sh configures; 168 MB extracted).
 #
 # apt-get does the work, with every directory it writes private to the cache below, so the system's
 # apt sources and lists are neither read nor changed and neither root nor sudo is needed:
@@ -31,12 +35,22 @@ set -euo pipefail
 
 die() {
     echo "fetch_opencv_source.sh: $*" >&2
-    echo "fetch_opencv_source.sh: the ctest entries opencv_calib3d/* need this source; configure" \
-        "with -DESSENTIAL_OPENCV_OWN_TESTS=OFF to leave them out" >&2
+    if [[ ${full:-0} -eq 1 ]]; then
+        echo "fetch_opencv_source.sh: the in-tree build needs this source; scripts/test.sh" \
+            "skips it with ESSENTIAL_INTREE=0" >&2
+    else
+        echo "fetch_opencv_source.sh: the ctest entries opencv_calib3d/* need this source;" \
+            "configure with -DESSENTIAL_OPENCV_OWN_TESTS=OFF to leave them out" >&2
+    fi
     exit 1
 }
 
-[[ $# -eq 1 ]] || die "usage: fetch_opencv_source.sh DEST"
+full=0
+if [[ $# -eq 2 && "$1" == --full ]]; then
+    full=1
+    shift
+fi
+[[ $# -eq 1 ]] || die "usage: fetch_opencv_source.sh [--full] DEST"
 dest=$1
 
 binary_package=libopencv-calib3d-dev
@@ -46,9 +60,17 @@ version=$(dpkg-query -W -f='${source:Version}' "$binary_package")
 # The extracted paths, relative to the top of the upstream tarball.
 subset=(modules/ts modules/calib3d/test modules/core/include/opencv2/core/private.hpp
     modules/core/include/opencv2/core/utils/configuration.private.hpp LICENSE)
+extent=subset
+if [[ $full -eq 1 ]]; then
+    # The upstream tarball's top-level entries: the Debian patches for the contrib tarball (not
+    # taken) touch none of them and are skipped.
+    subset=(CMakeLists.txt CONTRIBUTING.md COPYRIGHT LICENSE README.md SECURITY.md apps cmake data doc
+        include modules platforms samples)
+    extent=full
+fi
 
 stamp="$dest/.opencv-source-version"
-if [[ -f "$stamp" && "$(cat "$stamp")" == "$source_package $version" ]]; then
+if [[ -f "$stamp" && "$(cat "$stamp")" == "$source_package $version $extent" ]]; then
     exit 0
 fi
 
@@ -193,15 +215,22 @@ if [[ -f "$dest.partial/debian/patches/series" ]]; then
     done <"$dest.partial/debian/patches/series"
 fi
 
-echo "fetch_opencv_source.sh: extracting ${subset[*]} from $orig into $dest" >&2
-# Each path once: tar reports a second pattern for a member it has already extracted as not found.
-mapfile -t extract < <(printf '%s\n' "${extract[@]}" | sort -u)
-patterns=()
-for path in "${extract[@]}"; do patterns+=("*/$path"); done
-# --no-wildcards-match-slash: '*' is the top directory (opencv-4.6.0) only; a matched directory
-# comes with everything below it.
-tar -xf "$files_dir/$orig" -C "$dest.partial" --strip-components=1 --wildcards \
-    --no-wildcards-match-slash "${patterns[@]}" || die "extracting from $orig failed"
+if [[ $full -eq 1 ]]; then
+    echo "fetch_opencv_source.sh: extracting all of $orig into $dest" >&2
+    tar -xf "$files_dir/$orig" -C "$dest.partial" --strip-components=1 ||
+        die "extracting from $orig failed"
+else
+    echo "fetch_opencv_source.sh: extracting ${subset[*]} from $orig into $dest" >&2
+    # Each path once: tar reports a second pattern for a member it has already extracted as not
+    # found.
+    mapfile -t extract < <(printf '%s\n' "${extract[@]}" | sort -u)
+    patterns=()
+    for path in "${extract[@]}"; do patterns+=("*/$path"); done
+    # --no-wildcards-match-slash: '*' is the top directory (opencv-4.6.0) only; a matched directory
+    # comes with everything below it.
+    tar -xf "$files_dir/$orig" -C "$dest.partial" --strip-components=1 --wildcards \
+        --no-wildcards-match-slash "${patterns[@]}" || die "extracting from $orig failed"
+fi
 for path in "${subset[@]}"; do
     [[ -e "$dest.partial/$path" ]] || die "$orig has no $path"
 done
@@ -213,6 +242,6 @@ if [[ ${#needed_patches[@]} -gt 0 ]]; then
             <"$dest.partial/debian/patches/$patch_name" || die "debian/patches/$patch_name does not apply"
     done
 fi
-echo "$source_package $version" >"$dest.partial/.opencv-source-version"
+echo "$source_package $version $extent" >"$dest.partial/.opencv-source-version"
 rm -rf "$dest"
 mv "$dest.partial" "$dest"

@@ -5,6 +5,10 @@
 # target for FUZZ_SECONDS (default 20) with a fixed seed (fuzz.sh). Exits non-zero if any stage fails; the last line is "N passed, M failed"
 # over the ctest entries of both trees plus one per fuzz target. Extra arguments go to both ctest runs,
 # e.g. scripts/test.sh -R install_and_consume
+# Last, unless ESSENTIAL_INTREE=0, the in-tree stage (scripts/test_in_opencv.sh): OpenCV 4.6 built
+# from Debian's source with the module as an extra module (scripts/build_in_opencv.sh, cached
+# outside the clone), then opencv_test_essential, a short opencv_perf_essential run and the Python
+# test of cv2.essential; each of their test cases counts in the total.
 # Licensed under the Apache License, Version 2.0.
 set -euo pipefail
 
@@ -70,6 +74,21 @@ if [[ "${ESSENTIAL_SANITIZE:-1}" != 0 ]]; then
             failed=$((failed + 1))
         fi
     done
+fi
+
+if [[ "${ESSENTIAL_INTREE:-1}" != 0 ]]; then
+    echo
+    echo "== inside an OpenCV 4.6 source build (scripts/test_in_opencv.sh) =="
+    intree_log=$(mktemp)
+    scripts/test_in_opencv.sh 2>&1 | tee "$intree_log" || true
+    intree_summary=$(grep -E '^in-tree: [0-9]+ passed, [0-9]+ failed$' "$intree_log" | tail -n1 || true)
+    rm -f "$intree_log"
+    if [[ -z "$intree_summary" ]]; then
+        failed=$((failed + 1))
+    else
+        passed=$((passed + $(sed -E 's/^in-tree: ([0-9]+) passed.*/\1/' <<<"$intree_summary")))
+        failed=$((failed + $(sed -E 's/.* ([0-9]+) failed$/\1/' <<<"$intree_summary")))
+    fi
 fi
 
 echo

@@ -7,7 +7,7 @@
 #include "opencv2/essential.hpp"
 #include "synthetic_scene.hpp"
 
-#include <gtest/gtest.h>
+#include "essential_test.hpp"
 
 #include <functional>
 #include <limits>

@@ -8,7 +8,7 @@
 
 #include <opencv2/essential.hpp>
 
-#include <gtest/gtest.h>
+#include "essential_test.hpp"
 
 #include <atomic>
 

@@ -13,7 +13,7 @@
 #include "opencv2/essential.hpp"
 #include "synthetic_scene.hpp"
 
-#include <gtest/gtest.h>
+#include "essential_test.hpp"
 #include <opencv2/calib3d.hpp>
 
 #include <string>
@@ -303,8 +303,8 @@ INSTANTIATE_TEST_SUITE_P(EveryDropInOverload, DropInLayouts,
                                            Overload::FocalMaxIters, Overload::Focal,
                                            Overload::TwoCameras, Overload::Usac,
                                            Overload::UsacDistortion),
-                         [](const ::testing::TestParamInfo<Overload>& info) {
-                             return std::string(overloadName(info.param));
+                         [](const ::testing::TestParamInfo<Overload>& paramInfo) {
+                             return std::string(overloadName(paramInfo.param));
                          });
 
 // Two arrays of different layouts: OpenCV's RANSAC and LMEDS need the same number of channels

@@ -8,7 +8,7 @@
 #include "opencv2/essential.hpp"
 #include "synthetic_scene.hpp"
 
-#include <gtest/gtest.h>
+#include "essential_test.hpp"
 #include <opencv2/calib3d.hpp>
 
 #include <algorithm>

@@ -13,7 +13,7 @@
 #include "opencv2/essential.hpp"
 #include "synthetic_scene.hpp"
 
-#include <gtest/gtest.h>
+#include "essential_test.hpp"
 #include <opencv2/calib3d.hpp>
 
 #include <algorithm>
@@ -321,8 +321,8 @@ TEST_P(DropInRecoverPose, AcceptRejectAndOutputsAsOpenCV)
 INSTANTIATE_TEST_SUITE_P(EveryRecoverPoseOverload, DropInRecoverPose,
                          ::testing::Values(PoseOverload::Camera, PoseOverload::Focal,
                                            PoseOverload::DistanceThresh, PoseOverload::TwoCameras),
-                         [](const ::testing::TestParamInfo<PoseOverload>& info) {
-                             return std::string(overloadName(info.param));
+                         [](const ::testing::TestParamInfo<PoseOverload>& paramInfo) {
+                             return std::string(overloadName(paramInfo.param));
                          });
 
 TEST(DropInRecoverPose, EssentialMatrixFormsAsOpenCV)

@@ -9,7 +9,7 @@
 
 #include <opencv2/essential.hpp>
 
-#include <gtest/gtest.h>
+#include "essential_test.hpp"
 
 namespace {
 

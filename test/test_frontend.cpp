@@ -12,7 +12,7 @@
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 
-#include <gtest/gtest.h>
+#include "essential_test.hpp"
 
 #include <cmath>
 #include <fstream>

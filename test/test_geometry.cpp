@@ -10,7 +10,7 @@
 #include "geometry/sampson.hpp"
 #include "geometry/so3.hpp"
 
-#include <gtest/gtest.h>
+#include "essential_test.hpp"
 
 #include <cstdio>
 #include <random>

@@ -17,7 +17,7 @@
 #include <opencv2/calib3d.hpp>
 #include <opencv2/essential.hpp>
 
-#include <gtest/gtest.h>
+#include "essential_test.hpp"
 
 #include <algorithm>
 #include <set>

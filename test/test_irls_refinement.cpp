@@ -12,7 +12,7 @@
 #include "refinement_fixtures.hpp"
 #include "synthetic_scene.hpp"
 
-#include <gtest/gtest.h>
+#include "essential_test.hpp"
 
 #include <vector>
 

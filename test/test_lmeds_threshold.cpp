@@ -13,7 +13,7 @@
 
 #include <opencv2/essential.hpp>
 
-#include <gtest/gtest.h>
+#include "essential_test.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -10,7 +10,7 @@
 #include "opencv2/essential.hpp"
 #include "synthetic_scene.hpp"
 
-#include <gtest/gtest.h>
+#include "essential_test.hpp"
 
 #include <algorithm>
 #include <atomic>

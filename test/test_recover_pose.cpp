@@ -9,7 +9,7 @@
 #include "pose/pose_recovery.hpp"
 #include "synthetic_scene.hpp"
 
-#include <gtest/gtest.h>
+#include "essential_test.hpp"
 #include <opencv2/calib3d.hpp>
 
 #include <algorithm>

@@ -11,7 +11,7 @@
 #include "problem.hpp"
 #include "ransac/msac_score.hpp"
 
-#include <gtest/gtest.h>
+#include "essential_test.hpp"
 
 #include <random>
 #include <vector>

@@ -11,7 +11,7 @@
 
 #include <opencv2/essential.hpp>
 
-#include <gtest/gtest.h>
+#include "essential_test.hpp"
 
 #include <string>
 #include <tuple>

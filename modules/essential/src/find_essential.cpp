@@ -677,5 +677,11 @@ Mat findEssentialMatIter(InputArray points1, InputArray points2, InputArray came
                               MaskWriting::Usac, report, start);
 }
 
+Mat findEssentialMatIter(InputArray points1, InputArray points2, InputArray cameraMatrix,
+                         const EssentialParams& params, OutputArray mask, EssentialReport& report)
+{
+    return findEssentialMatIter(points1, points2, cameraMatrix, params, mask, &report);
+}
+
 } // namespace essential
 } // namespace cv

@@ -14,7 +14,8 @@
 /** @defgroup essential Essential matrix estimation with iterative minimal-set solvers
 
 Fast, robust estimation of the essential matrix between two calibrated views, after Rosten,
-Reitmayr and Drummond, "Improved RANSAC performance using simple, iterative minimal-set solvers":
+Reitmayr and Drummond, "Improved RANSAC performance using simple, iterative minimal-set solvers"
+@cite Rosten2010:
 hypotheses come from a tiny Gauss-Newton or Levenberg-Marquardt optimiser on a minimal set of five
 correspondences in a 5-DOF parameterisation (rotation by the SO(3) exponential map, translation as a
 rotated unit vector), or from a speed-tuned Nister five-point solver (the default draws from both
@@ -189,23 +190,25 @@ as in OpenCV): 1 for the inliers of the returned E, 0 otherwise.
 solutions found, stacked as a 3n x 3 Mat; an empty Mat (and an all-zero mask) when no essential
 matrix is found.
 @throws cv::Exception for invalid arguments, with a message that names the argument.
+@sa cv::findEssentialMat
 */
-CV_EXPORTS Mat findEssentialMatIter(InputArray points1, InputArray points2, InputArray cameraMatrix,
-                                    int method = RANSAC, double prob = 0.999,
-                                    double threshold = 1.0, int maxIters = 1000,
-                                    OutputArray mask = noArray());
+CV_EXPORTS_W Mat findEssentialMatIter(InputArray points1, InputArray points2,
+                                      InputArray cameraMatrix, int method = RANSAC,
+                                      double prob = 0.999, double threshold = 1.0,
+                                      int maxIters = 1000, OutputArray mask = noArray());
 
-/** @overload Same as above with maxIters = 1000 (OpenCV's older form). */
+/** @overload Same as above with maxIters = 1000 (OpenCV's older form). @sa cv::findEssentialMat */
 CV_EXPORTS Mat findEssentialMatIter(InputArray points1, InputArray points2, InputArray cameraMatrix,
                                     int method, double prob, double threshold, OutputArray mask);
 
-/** @overload The camera matrix is [focal 0 pp.x; 0 focal pp.y; 0 0 1]. */
-CV_EXPORTS Mat findEssentialMatIter(InputArray points1, InputArray points2, double focal = 1.0,
-                                    Point2d pp = Point2d(0, 0), int method = RANSAC,
-                                    double prob = 0.999, double threshold = 1.0,
-                                    int maxIters = 1000, OutputArray mask = noArray());
+/** @overload The camera matrix is [focal 0 pp.x; 0 focal pp.y; 0 0 1]. @sa cv::findEssentialMat */
+CV_EXPORTS_W Mat findEssentialMatIter(InputArray points1, InputArray points2, double focal = 1.0,
+                                      Point2d pp = Point2d(0, 0), int method = RANSAC,
+                                      double prob = 0.999, double threshold = 1.0,
+                                      int maxIters = 1000, OutputArray mask = noArray());
 
-/** @overload Focal/principal-point form with maxIters = 1000 (OpenCV's older form). */
+/** @overload Focal/principal-point form with maxIters = 1000 (OpenCV's older form). @sa
+ * cv::findEssentialMat */
 CV_EXPORTS Mat findEssentialMatIter(InputArray points1, InputArray points2, double focal,
                                     Point2d pp, int method, double prob, double threshold,
                                     OutputArray mask);
@@ -215,12 +218,13 @@ CV_EXPORTS Mat findEssentialMatIter(InputArray points1, InputArray points2, doub
 As in OpenCV, the points are undistorted with their own camera, then mapped through the mean of the
 two camera matrices, whose focal lengths also convert the pixel threshold. As cv::undistortPoints,
 this form takes CV_32F or CV_64F points only, N x 2, 2 x N, N x 1 or 1 x N, continuous in memory.
+@sa cv::findEssentialMat
 */
-CV_EXPORTS Mat findEssentialMatIter(InputArray points1, InputArray points2,
-                                    InputArray cameraMatrix1, InputArray distCoeffs1,
-                                    InputArray cameraMatrix2, InputArray distCoeffs2,
-                                    int method = RANSAC, double prob = 0.999,
-                                    double threshold = 1.0, OutputArray mask = noArray());
+CV_EXPORTS_W Mat findEssentialMatIter(InputArray points1, InputArray points2,
+                                      InputArray cameraMatrix1, InputArray distCoeffs1,
+                                      InputArray cameraMatrix2, InputArray distCoeffs2,
+                                      int method = RANSAC, double prob = 0.999,
+                                      double threshold = 1.0, OutputArray mask = noArray());
 
 /** @overload UsacParams form.
 
@@ -231,11 +235,12 @@ isParallel and neighborsSearch cannot change the result and are ignored. Invalid
 StsBadArg naming the field. As in OpenCV, the points are undistorted with each camera's own
 coefficients when there are any (then read as the two-camera form reads them, a view copied first),
 and read as with the USAC flags otherwise; the mask is N x 1.
+@sa cv::findEssentialMat
 */
-CV_EXPORTS Mat findEssentialMatIter(InputArray points1, InputArray points2,
-                                    InputArray cameraMatrix1, InputArray cameraMatrix2,
-                                    InputArray distCoeffs1, InputArray distCoeffs2,
-                                    OutputArray mask, const UsacParams& params);
+CV_EXPORTS_W Mat findEssentialMatIter(InputArray points1, InputArray points2,
+                                      InputArray cameraMatrix1, InputArray cameraMatrix2,
+                                      InputArray dist_coeff1, InputArray dist_coeff2,
+                                      OutputArray mask, const UsacParams& params);
 
 /** @brief The module's own overload: every setting, and an optional report.
 
@@ -248,10 +253,19 @@ USAC flags, which take them all).
 flags).
 @param report if not null, filled with R, t, counts and timings.
 @return E (3 x 3 CV_64F; 3n x 3 for exactly five points), or an empty Mat on failure.
+@sa cv::findEssentialMat
 */
 CV_EXPORTS Mat findEssentialMatIter(InputArray points1, InputArray points2, InputArray cameraMatrix,
                                     const EssentialParams& params, OutputArray mask = noArray(),
                                     EssentialReport* report = nullptr);
+
+/** @overload The report by reference, the form OpenCV's Python generator wraps: in Python,
+`E, mask, report = cv2.essential.findEssentialMatIter(points1, points2, cameraMatrix, params)`.
+@sa cv::findEssentialMat
+*/
+CV_EXPORTS_W Mat findEssentialMatIter(InputArray points1, InputArray points2,
+                                      InputArray cameraMatrix, const EssentialParams& params,
+                                      OutputArray mask, CV_OUT EssentialReport& report);
 
 /** @brief Drop-in replacement for `cv::recoverPose(E, points1, points2, cameraMatrix, R, t, mask)`.
 
@@ -275,15 +289,16 @@ points are used; on return it is N x 1 CV_8U and keeps its value at the points u
 front of both cameras for the chosen pose, 0 elsewhere; if empty, it is created with 255 at those
 points.
 @return the number of (masked) points in front of both cameras.
+@sa cv::recoverPose
 */
-CV_EXPORTS int recoverPose(InputArray E, InputArray points1, InputArray points2,
-                           InputArray cameraMatrix, OutputArray R, OutputArray t,
-                           InputOutputArray mask = noArray());
+CV_EXPORTS_W int recoverPose(InputArray E, InputArray points1, InputArray points2,
+                             InputArray cameraMatrix, OutputArray R, OutputArray t,
+                             InputOutputArray mask = noArray());
 
-/** @overload The camera matrix is [focal 0 pp.x; 0 focal pp.y; 0 0 1]. */
-CV_EXPORTS int recoverPose(InputArray E, InputArray points1, InputArray points2, OutputArray R,
-                           OutputArray t, double focal = 1.0, Point2d pp = Point2d(0, 0),
-                           InputOutputArray mask = noArray());
+/** @overload The camera matrix is [focal 0 pp.x; 0 focal pp.y; 0 0 1]. @sa cv::recoverPose */
+CV_EXPORTS_W int recoverPose(InputArray E, InputArray points1, InputArray points2, OutputArray R,
+                             OutputArray t, double focal = 1.0, Point2d pp = Point2d(0, 0),
+                             InputOutputArray mask = noArray());
 
 /** @overload With OpenCV's distance cut and the triangulated points.
 
@@ -299,11 +314,12 @@ StsBadArg (OpenCV then counts no point).
 camera's frame (X2 = R X1 + t): each column the DLT solution of unit norm, with W >= 0 (OpenCV's
 columns are also of unit norm, with the sign its SVD gives). When E cannot be decomposed (the zero
 matrix) the call returns 0 with R = I, t = 0 and triangulatedPoints empty.
+@sa cv::recoverPose
 */
-CV_EXPORTS int recoverPose(InputArray E, InputArray points1, InputArray points2,
-                           InputArray cameraMatrix, OutputArray R, OutputArray t,
-                           double distanceThresh, InputOutputArray mask = noArray(),
-                           OutputArray triangulatedPoints = noArray());
+CV_EXPORTS_W int recoverPose(InputArray E, InputArray points1, InputArray points2,
+                             InputArray cameraMatrix, OutputArray R, OutputArray t,
+                             double distanceThresh, InputOutputArray mask = noArray(),
+                             OutputArray triangulatedPoints = noArray());
 
 /** @overload Estimates E from two cameras with distortion, then recovers the pose.
 
@@ -330,12 +346,13 @@ exactly five points, of the several solutions the one with the most points in fr
 @param threshold inlier threshold in pixels (converted with the mean focal length of the cameras).
 @param mask output N x 1 CV_8U: 1 at the inliers of E in front of both cameras, 0 elsewhere.
 @return the number of (masked) points in front of both cameras.
+@sa cv::recoverPose
 */
-CV_EXPORTS int recoverPose(InputArray points1, InputArray points2, InputArray cameraMatrix1,
-                           InputArray distCoeffs1, InputArray cameraMatrix2, InputArray distCoeffs2,
-                           OutputArray E, OutputArray R, OutputArray t, int method = cv::RANSAC,
-                           double prob = 0.999, double threshold = 1.0,
-                           InputOutputArray mask = noArray());
+CV_EXPORTS_W int recoverPose(InputArray points1, InputArray points2, InputArray cameraMatrix1,
+                             InputArray distCoeffs1, InputArray cameraMatrix2,
+                             InputArray distCoeffs2, OutputArray E, OutputArray R, OutputArray t,
+                             int method = cv::RANSAC, double prob = 0.999, double threshold = 1.0,
+                             InputOutputArray mask = noArray());
 
 //! @}
 

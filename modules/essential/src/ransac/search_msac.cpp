@@ -218,9 +218,9 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
         const double s = std::max(1e-3, solver.hitProbabilityAt(1.0, result.E));
         const double wMax =
             std::min(1.0, std::pow(1.0 / (s * confidenceCap), 1.0 / buffer.sampleSize));
-        const int needed = significantInliers(result.E, problem, problem.threshold,
-                                              buffer.sampleSize, std::max(cap, 1));
-        extensionVerdict = needed >= 0 && wMax * n >= needed ? 1 : 0;
+        const int inliersNeeded = significantInliers(result.E, problem, problem.threshold,
+                                                     buffer.sampleSize, std::max(cap, 1));
+        extensionVerdict = inliersNeeded >= 0 && wMax * n >= inliersNeeded ? 1 : 0;
         return extensionVerdict == 1;
     };
     // Past the confidence cap (the extended budget of settings.minSampleCap) the rule asks only for

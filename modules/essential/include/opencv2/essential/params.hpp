@@ -62,7 +62,7 @@ enum EssentialSampleBudget {
 };
 
 /** True when this build can run solvers inside OpenCV's own RANSAC loop (ENGINE_OPENCV). */
-CV_EXPORTS bool isOpenCvLoopAvailable();
+CV_EXPORTS_W bool isOpenCvLoopAvailable();
 
 /** @brief Settings of one essential-matrix estimate (the module's own overload of
 findEssentialMatIter()).
@@ -70,6 +70,13 @@ findEssentialMatIter()).
 The defaults are those of the drop-in overloads, which behave like `cv::findEssentialMat` with
 `method = RANSAC`, `prob = 0.999`, `threshold = 1.0`, `maxIters = 1000`.
 */
+// OpenCV's Python generator (modules/python/src2/hdr_parser.py of OpenCV 4.6, inside an OpenCV
+// build) cannot read member initialisers: it would take `int maxIters = 1000;` for a field named
+// "maxIters = 1000". It skips `#ifndef OPENCV_BINDING_PARSER` blocks and reads the declaration in
+// the `#ifdef OPENCV_BINDING_PARSER` block instead, which the compiler never sees: the same struct
+// with the binding macros and the fields without their defaults. Keep the two field lists equal
+// (modules/essential/misc/python/test/test_essential.py checks that cv2.essential has them all).
+#ifndef OPENCV_BINDING_PARSER
 struct CV_EXPORTS EssentialParams
 {
     /** Name of a registered solver (see listSolvers()) or a composite such as "gn+nister" (see
@@ -215,8 +222,36 @@ struct CV_EXPORTS EssentialParams
     recoverPose()) and store them in the report. */
     bool recoverPose = true;
 };
+#endif
+#ifdef OPENCV_BINDING_PARSER
+struct CV_EXPORTS_W_SIMPLE EssentialParams
+{
+    CV_WRAP EssentialParams();
+    CV_PROP_RW std::string solver;
+    CV_PROP_RW int method;
+    CV_PROP_RW int engine;
+    CV_PROP_RW double timeBudgetMs;
+    CV_PROP_RW int preemptiveHypotheses;
+    CV_PROP_RW int preemptiveBlockSize;
+    CV_PROP_RW double confidence;
+    CV_PROP_RW double threshold;
+    CV_PROP_RW EssentialDistance distance;
+    CV_PROP_RW int maxIters;
+    CV_PROP_RW int sampleBudget;
+    CV_PROP_RW bool budgetLocalSamples;
+    CV_PROP_RW bool planeParallax;
+    CV_PROP_RW int loIterations;
+    CV_PROP_RW int loSampleSize;
+    CV_PROP_RW int sampler;
+    CV_PROP_RW bool sprt;
+    CV_PROP_RW uint64 seed;
+    CV_PROP_RW bool refine;
+    CV_PROP_RW bool recoverPose;
+};
+#endif
 
 /** @brief What one estimate did: the pose, the counts and the time spent per stage. */
+#ifndef OPENCV_BINDING_PARSER
 struct CV_EXPORTS EssentialReport
 {
     bool success = false;         //!< an essential matrix was found
@@ -264,6 +299,39 @@ struct CV_EXPORTS EssentialReport
     double timePoseMs = 0;   //!< decomposition into R and t
     double timeTotalMs = 0;  //!< the whole call
 };
+#endif
+#ifdef OPENCV_BINDING_PARSER
+struct CV_EXPORTS_W_SIMPLE EssentialReport
+{
+    CV_WRAP EssentialReport();
+    CV_PROP_RW bool success;
+    CV_PROP_RW Matx33d E;
+    CV_PROP_RW Matx33d R;
+    CV_PROP_RW Vec3d t;
+    CV_PROP_RW bool poseRecovered;
+    CV_PROP_RW int pointsInFront;
+    CV_PROP_RW double rotationOnlyFraction;
+    CV_PROP_RW double homographyFraction;
+    CV_PROP_RW bool degenerate;
+    CV_PROP_RW int numPoints;
+    CV_PROP_RW int inliers;
+    CV_PROP_RW int iterations;
+    CV_PROP_RW int hypothesesGenerated;
+    CV_PROP_RW int hypothesesConverged;
+    CV_PROP_RW int hypothesesScored;
+    CV_PROP_RW int refineIterations;
+    CV_PROP int64 pointsScored;
+    CV_PROP_RW int localOptimisations;
+    CV_PROP_RW int localOptimisationsKept;
+    CV_PROP_RW int sprtRejections;
+    CV_PROP_RW bool planeParallaxKept;
+    CV_PROP_RW double timeSetupMs;
+    CV_PROP_RW double timeSearchMs;
+    CV_PROP_RW double timeRefineMs;
+    CV_PROP_RW double timePoseMs;
+    CV_PROP_RW double timeTotalMs;
+};
+#endif
 
 //! @}
 

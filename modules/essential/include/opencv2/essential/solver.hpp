@@ -121,7 +121,7 @@ drawing hypotheses from GN and Nister together. Its sample is the largest any pa
 CV_EXPORTS Ptr<EssentialSolver> createSolver(const std::string& name);
 
 /** The names of all registered solvers, sorted (composites are not listed). */
-CV_EXPORTS std::vector<std::string> listSolvers();
+CV_EXPORTS_W std::vector<std::string> listSolvers();
 
 //! @}
 

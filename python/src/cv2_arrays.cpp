@@ -165,14 +165,12 @@ py::object toNumpy(const cv::Mat& m)
     case CV_32F:
         dt = py::dtype::of<float>();
         break;
-    default:
+    default: // CV_64F, and CV_16F converted to it
         dt = py::dtype::of<double>();
         break;
     }
     cv::Mat src = m;
-    if (m.depth() != CV_8U && m.depth() != CV_8S && m.depth() != CV_16U && m.depth() != CV_16S &&
-        m.depth() != CV_32S && m.depth() != CV_32F && m.depth() != CV_64F)
-        m.convertTo(src, CV_64F);
+    if (m.depth() == CV_16F) m.convertTo(src, CV_64F);
     if (!src.isContinuous()) src = src.clone();
     std::vector<py::ssize_t> shape;
     if (src.dims > 2) {

@@ -12,6 +12,7 @@
 #include <pybind11/stl.h>
 
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace cv_essential_py {
@@ -73,6 +74,34 @@ Params paramsFromKeywords(const py::dict& kwargs)
     return self.cast<Params>();
 }
 
+/** Calls f(name, member pointer) for each number of EssentialReport besides success, E, R and t,
+in the header's order: the one list the Python attributes and the pickled state are made from. */
+template <class F> void forEachReportNumber(F&& f)
+{
+    f("poseRecovered", &Report::poseRecovered);
+    f("pointsInFront", &Report::pointsInFront);
+    f("rotationOnlyFraction", &Report::rotationOnlyFraction);
+    f("homographyFraction", &Report::homographyFraction);
+    f("degenerate", &Report::degenerate);
+    f("numPoints", &Report::numPoints);
+    f("inliers", &Report::inliers);
+    f("iterations", &Report::iterations);
+    f("hypothesesGenerated", &Report::hypothesesGenerated);
+    f("hypothesesConverged", &Report::hypothesesConverged);
+    f("hypothesesScored", &Report::hypothesesScored);
+    f("refineIterations", &Report::refineIterations);
+    f("pointsScored", &Report::pointsScored);
+    f("localOptimisations", &Report::localOptimisations);
+    f("localOptimisationsKept", &Report::localOptimisationsKept);
+    f("sprtRejections", &Report::sprtRejections);
+    f("planeParallaxKept", &Report::planeParallaxKept);
+    f("timeSetupMs", &Report::timeSetupMs);
+    f("timeSearchMs", &Report::timeSearchMs);
+    f("timeRefineMs", &Report::timeRefineMs);
+    f("timePoseMs", &Report::timePoseMs);
+    f("timeTotalMs", &Report::timeTotalMs);
+}
+
 } // namespace
 
 /** The report's numbers in a fixed order: E, R, t (row by row), then the other fields in the
@@ -87,34 +116,15 @@ py::tuple reportState(const Report& r)
         s.append(r.R.val[k]);
     for (int k = 0; k < 3; ++k)
         s.append(r.t[k]);
-    s.append(r.poseRecovered);
-    s.append(r.pointsInFront);
-    s.append(r.rotationOnlyFraction);
-    s.append(r.homographyFraction);
-    s.append(r.degenerate);
-    s.append(r.numPoints);
-    s.append(r.inliers);
-    s.append(r.iterations);
-    s.append(r.hypothesesGenerated);
-    s.append(r.hypothesesConverged);
-    s.append(r.hypothesesScored);
-    s.append(r.refineIterations);
-    s.append(r.pointsScored);
-    s.append(r.localOptimisations);
-    s.append(r.localOptimisationsKept);
-    s.append(r.sprtRejections);
-    s.append(r.planeParallaxKept);
-    s.append(r.timeSetupMs);
-    s.append(r.timeSearchMs);
-    s.append(r.timeRefineMs);
-    s.append(r.timePoseMs);
-    s.append(r.timeTotalMs);
+    forEachReportNumber([&](const char*, auto member) { s.append(r.*member); });
     return py::tuple(s);
 }
 
 Report reportFromState(const py::tuple& s)
 {
-    if (s.size() != 44)
+    size_t numbers = 0;
+    forEachReportNumber([&](const char*, auto) { ++numbers; });
+    if (s.size() != 1 + 9 + 9 + 3 + numbers)
         throw py::value_error("EssentialReport: not the pickle of one from this module version");
     Report r;
     size_t i = 0;
@@ -125,28 +135,9 @@ Report reportFromState(const py::tuple& s)
         r.R.val[k] = s[i++].cast<double>();
     for (int k = 0; k < 3; ++k)
         r.t[k] = s[i++].cast<double>();
-    r.poseRecovered = s[i++].cast<decltype(r.poseRecovered)>();
-    r.pointsInFront = s[i++].cast<decltype(r.pointsInFront)>();
-    r.rotationOnlyFraction = s[i++].cast<decltype(r.rotationOnlyFraction)>();
-    r.homographyFraction = s[i++].cast<decltype(r.homographyFraction)>();
-    r.degenerate = s[i++].cast<decltype(r.degenerate)>();
-    r.numPoints = s[i++].cast<decltype(r.numPoints)>();
-    r.inliers = s[i++].cast<decltype(r.inliers)>();
-    r.iterations = s[i++].cast<decltype(r.iterations)>();
-    r.hypothesesGenerated = s[i++].cast<decltype(r.hypothesesGenerated)>();
-    r.hypothesesConverged = s[i++].cast<decltype(r.hypothesesConverged)>();
-    r.hypothesesScored = s[i++].cast<decltype(r.hypothesesScored)>();
-    r.refineIterations = s[i++].cast<decltype(r.refineIterations)>();
-    r.pointsScored = s[i++].cast<decltype(r.pointsScored)>();
-    r.localOptimisations = s[i++].cast<decltype(r.localOptimisations)>();
-    r.localOptimisationsKept = s[i++].cast<decltype(r.localOptimisationsKept)>();
-    r.sprtRejections = s[i++].cast<decltype(r.sprtRejections)>();
-    r.planeParallaxKept = s[i++].cast<decltype(r.planeParallaxKept)>();
-    r.timeSetupMs = s[i++].cast<decltype(r.timeSetupMs)>();
-    r.timeSearchMs = s[i++].cast<decltype(r.timeSearchMs)>();
-    r.timeRefineMs = s[i++].cast<decltype(r.timeRefineMs)>();
-    r.timePoseMs = s[i++].cast<decltype(r.timePoseMs)>();
-    r.timeTotalMs = s[i++].cast<decltype(r.timeTotalMs)>();
+    forEachReportNumber([&](const char*, auto member) {
+        r.*member = s[i++].cast<std::decay_t<decltype(r.*member)>>();
+    });
     return r;
 }
 
@@ -215,35 +206,16 @@ void defineParamsAndReport(py::module_& m)
             },
             [](const py::dict& state) { return paramsFromKeywords(state); }));
 
-    py::class_<Report>(m, "EssentialReport",
-                       "What one estimate did: the pose, the counts and the time of each stage "
-                       "(opencv2/essential/params.hpp documents every field).")
-        .def_readonly("success", &Report::success)
+    py::class_<Report> report(
+        m, "EssentialReport",
+        "What one estimate did: the pose, the counts and the time of each stage "
+        "(opencv2/essential/params.hpp documents every field).");
+    report.def_readonly("success", &Report::success)
         .def_property_readonly("E", [](const Report& r) { return toNumpy(cv::Mat(r.E)); })
         .def_property_readonly("R", [](const Report& r) { return toNumpy(cv::Mat(r.R)); })
-        .def_property_readonly("t", [](const Report& r) { return toNumpy(cv::Mat(r.t)); })
-        .def_readonly("poseRecovered", &Report::poseRecovered)
-        .def_readonly("pointsInFront", &Report::pointsInFront)
-        .def_readonly("rotationOnlyFraction", &Report::rotationOnlyFraction)
-        .def_readonly("homographyFraction", &Report::homographyFraction)
-        .def_readonly("degenerate", &Report::degenerate)
-        .def_readonly("numPoints", &Report::numPoints)
-        .def_readonly("inliers", &Report::inliers)
-        .def_readonly("iterations", &Report::iterations)
-        .def_readonly("hypothesesGenerated", &Report::hypothesesGenerated)
-        .def_readonly("hypothesesConverged", &Report::hypothesesConverged)
-        .def_readonly("hypothesesScored", &Report::hypothesesScored)
-        .def_readonly("refineIterations", &Report::refineIterations)
-        .def_readonly("pointsScored", &Report::pointsScored)
-        .def_readonly("localOptimisations", &Report::localOptimisations)
-        .def_readonly("localOptimisationsKept", &Report::localOptimisationsKept)
-        .def_readonly("sprtRejections", &Report::sprtRejections)
-        .def_readonly("planeParallaxKept", &Report::planeParallaxKept)
-        .def_readonly("timeSetupMs", &Report::timeSetupMs)
-        .def_readonly("timeSearchMs", &Report::timeSearchMs)
-        .def_readonly("timeRefineMs", &Report::timeRefineMs)
-        .def_readonly("timePoseMs", &Report::timePoseMs)
-        .def_readonly("timeTotalMs", &Report::timeTotalMs)
+        .def_property_readonly("t", [](const Report& r) { return toNumpy(cv::Mat(r.t)); });
+    forEachReportNumber([&](const char* name, auto member) { report.def_readonly(name, member); });
+    report
         .def("__repr__",
              [](const Report& r) {
                  return cv::format("EssentialReport(success=%s, inliers=%d of %d, iterations=%d, "

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Runs the libFuzzer targets (fuzz/fuzz_<target>.cpp: input_layer, solvers, engines) of the
+# Runs the libFuzzer targets (fuzz/fuzz_<target>.cpp: input_layer, solvers, engines, colmap) of the
 # sanitizer tree (ASan + UBSan, see sanitize.sh; built first if needed), each for a fixed time or a
 # fixed number of runs with a fixed seed, starting from its seeds in fuzz/corpus/<target>/ and its
 # kept failures in fuzz/regression/<target>/. New corpus entries go to
@@ -30,7 +30,7 @@ runs=${FUZZ_RUNS:-}
 seed=${FUZZ_SEED:-1}
 jobs=${FUZZ_JOBS:-1}
 targets=("$@")
-[[ ${#targets[@]} -gt 0 ]] || targets=(input_layer solvers engines)
+[[ ${#targets[@]} -gt 0 ]] || targets=(input_layer solvers engines colmap)
 
 missing=0
 for t in "${targets[@]}"; do
@@ -65,10 +65,13 @@ for t in "${targets[@]}"; do
     log="$build_dir/fuzz-$t.log"
     dict=()
     [[ ! -f "$root/fuzz/$t.dict" ]] || dict=(-dict="$root/fuzz/$t.dict")
+    # The colmap target's inputs are SQLite files (its seeds: 14 KB); the others' are choices.
+    max_len=4096
+    [[ "$t" != colmap ]] || max_len=16384
     status=0
     start=$(date +%s.%N)
     "$build_dir/fuzz/essential_fuzz_$t" "$corpus" "$root/fuzz/corpus/$t" "$root/fuzz/regression/$t" \
-        -seed="$seed" "${limit[@]}" "${dict[@]}" -timeout=60 -rss_limit_mb=2048 -max_len=4096 \
+        -seed="$seed" "${limit[@]}" "${dict[@]}" -timeout=60 -rss_limit_mb=2048 -max_len="$max_len" \
         -print_final_stats=1 -artifact_prefix="$build_dir/fuzz-$t-" >"$log" 2>&1 || status=$?
     elapsed=$(awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN {print b - a}')
     executions=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | awk '{s += $1} END {print s + 0}')

@@ -67,7 +67,7 @@ if [[ "${ESSENTIAL_SANITIZE:-1}" != 0 ]]; then
     run_ctest_stage scripts/sanitize.sh -j"${JOBS:-$(nproc)}" -E "$sanitize_slow" "$@"
     echo
     echo "== libFuzzer, ${FUZZ_SECONDS:-20} s per target (scripts/fuzz.sh) =="
-    for target in input_layer solvers engines; do
+    for target in input_layer solvers engines colmap; do
         if scripts/fuzz.sh "$target"; then
             passed=$((passed + 1))
         else

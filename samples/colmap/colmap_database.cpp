@@ -24,6 +24,16 @@ std::vector<unsigned char> matrixBlob(const SqliteStatement& row, int rowsColumn
     if (rows < 0 || cols < 0 || (rows > 0 && cols == 0))
         throw DatabaseError(what + ": invalid shape " + std::to_string(rows) + " x " +
                             std::to_string(cols));
+    // rows * cols * elementBytes can wrap around (rows 768614336404564651, cols 6 and 4-byte
+    // elements make 8 bytes): bound each factor by the blob's size first, so that a wrapped size
+    // never matches a small blob and a huge row count never reaches an allocation.
+    const std::uint64_t elements = data.size() / elementBytes;
+    if (rows > 0 &&
+        (static_cast<std::uint64_t>(cols) > elements ||
+         static_cast<std::uint64_t>(rows) > elements / static_cast<std::uint64_t>(cols)))
+        throw DatabaseError(what + ": blob of " + std::to_string(data.size()) +
+                            " bytes, too small for " + std::to_string(rows) + " x " +
+                            std::to_string(cols));
     const std::size_t expected =
         static_cast<std::size_t>(rows) * static_cast<std::size_t>(cols) * elementBytes;
     if (data.size() != expected)

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <map>
 #include <stdexcept>
 
@@ -35,14 +36,24 @@ struct PreparedPair
     cv::essential::EssentialPair input;
 };
 
+/** The largest normalised coordinate the module accepts (essential.hpp: points more than 1e8 focal
+lengths from the principal point are invalid input). A keypoint beyond it (a corrupt keypoints
+blob: no camera images such a point) is unusable, as one whose undistortion did not converge, so
+that it cannot make the estimate of its pair, and with it the whole verification, fail. */
+constexpr double kMaxNormalisedCoordinate = 1e8;
+
 NormalisedKeypoints normaliseKeypoints(const std::vector<cv::Point2f>& pixels,
                                        const CameraIntrinsics& camera)
 {
     NormalisedKeypoints out;
     out.points.resize(pixels.size());
     out.valid.resize(pixels.size());
-    for (std::size_t i = 0; i < pixels.size(); ++i)
-        out.valid[i] = undistortPixel(camera, cv::Point2d(pixels[i].x, pixels[i].y), out.points[i]);
+    for (std::size_t i = 0; i < pixels.size(); ++i) {
+        cv::Point2d& n = out.points[i];
+        out.valid[i] = undistortPixel(camera, cv::Point2d(pixels[i].x, pixels[i].y), n) &&
+                       std::abs(n.x) <= kMaxNormalisedCoordinate &&
+                       std::abs(n.y) <= kMaxNormalisedCoordinate;
+    }
     return out;
 }
 
@@ -126,6 +137,18 @@ Verification verifyPairs(ColmapDatabase& database, const VerificationOptions& op
             const NormalisedKeypoints& kp1 = keypoints[ids.first];
             const NormalisedKeypoints& kp2 = keypoints[ids.second];
             PreparedPair& p = prepared[static_cast<std::size_t>(k - first)];
+            // Both views in pixels of one virtual camera, focal length the mean of the two cameras'
+            // and principal point at 0: the pixel threshold then means what COLMAP's max_error
+            // means for a pair of cameras (normalised by their mean focal length). Summed in
+            // quarters: the sum of four finite focal lengths may overflow, their mean cannot.
+            const CameraIntrinsics& c1 = intrinsicsOfImage[ids.first];
+            const CameraIntrinsics& c2 = intrinsicsOfImage[ids.second];
+            const double focal = 0.25 * c1.fx + 0.25 * c1.fy + 0.25 * c2.fx + 0.25 * c2.fy;
+            // A point whose virtual pixel is not finite (a focal length near the largest double)
+            // is unusable too.
+            const auto pixelFinite = [focal](const cv::Point2d& n) {
+                return std::isfinite(focal * n.x) && std::isfinite(focal * n.y);
+            };
             p.matches = database.matches(pairId);
             for (std::size_t m = 0; m < p.matches.size(); ++m) {
                 const FeatureMatch& match = p.matches[m];
@@ -137,16 +160,11 @@ Verification verifyPairs(ColmapDatabase& database, const VerificationOptions& op
                         " and " + std::to_string(ids.second) + " have " +
                         std::to_string(kp1.points.size()) + " and " +
                         std::to_string(kp2.points.size()));
-                if (kp1.valid[match[0]] && kp2.valid[match[1]])
+                if (kp1.valid[match[0]] && kp2.valid[match[1]] &&
+                    pixelFinite(kp1.points[match[0]]) && pixelFinite(kp2.points[match[1]]))
                     p.usable.push_back(static_cast<int>(m));
             }
             if (static_cast<int>(p.usable.size()) < minMatches) continue;
-            // Both views in pixels of one virtual camera, focal length the mean of the two cameras'
-            // and principal point at 0: the pixel threshold then means what COLMAP's max_error
-            // means for a pair of cameras (normalised by their mean focal length).
-            const CameraIntrinsics& c1 = intrinsicsOfImage[ids.first];
-            const CameraIntrinsics& c2 = intrinsicsOfImage[ids.second];
-            const double focal = 0.25 * (c1.fx + c1.fy + c2.fx + c2.fy);
             cv::Mat points1(static_cast<int>(p.usable.size()), 2, CV_64F);
             cv::Mat points2(points1.size(), CV_64F);
             for (std::size_t u = 0; u < p.usable.size(); ++u) {

@@ -1,0 +1,128 @@
+// This file is part of opencv_essential, licensed under the Apache License, Version 2.0.
+// See the LICENSE file at the top of the source tree.
+//
+// A COLMAP database whose schema is right but whose content is not (the colmap fuzz target's
+// findings, fuzz/fuzz_colmap.cpp): a blob shape whose byte count wraps around is refused with a
+// DatabaseError, and a keypoint far outside any image makes its matches unusable instead of failing
+// the whole verification. The databases are built here with SQLite alone (no colmap needed).
+
+#include "colmap/colmap_database.hpp"
+#include "colmap/pair_id.hpp"
+#include "colmap/verify_pairs.hpp"
+
+#include <sqlite3.h>
+
+#include <opencv2/calib3d.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+using namespace essential_colmap;
+
+namespace {
+
+/** A file with the tables and columns the tools read (checkColmapSchema), and nothing else. */
+std::string emptyColmapDatabase(const std::string& name)
+{
+    const std::string path = std::string(COLMAP_TEST_WORK) + "/" + name + ".db";
+    std::remove(path.c_str());
+    sqlite3* db = nullptr;
+    EXPECT_EQ(sqlite3_open(path.c_str(), &db), SQLITE_OK);
+    const char* schema =
+        "CREATE TABLE cameras (camera_id INTEGER PRIMARY KEY, model INTEGER, width INTEGER, "
+        "height INTEGER, params BLOB, prior_focal_length INTEGER);"
+        "CREATE TABLE images (image_id INTEGER PRIMARY KEY, name TEXT, camera_id INTEGER);"
+        "CREATE TABLE keypoints (image_id INTEGER PRIMARY KEY, rows INTEGER, cols INTEGER, "
+        "data BLOB);"
+        "CREATE TABLE matches (pair_id INTEGER PRIMARY KEY, rows INTEGER, cols INTEGER, data BLOB);"
+        "CREATE TABLE two_view_geometries (pair_id INTEGER PRIMARY KEY, rows INTEGER, "
+        "cols INTEGER, data BLOB, config INTEGER, F BLOB, E BLOB, H BLOB, qvec BLOB, tvec BLOB);";
+    EXPECT_EQ(sqlite3_exec(db, schema, nullptr, nullptr, nullptr), SQLITE_OK);
+    sqlite3_close(db);
+    return path;
+}
+
+/** Inserts one row: `sql` with integer parameters `values`, then `blob` bound last. */
+void insertRow(const std::string& path, const std::string& sql,
+               const std::vector<std::int64_t>& values, const void* blob, std::size_t bytes)
+{
+    SqliteConnection connection(path, false);
+    SqliteStatement insert(connection, sql);
+    int index = 1;
+    for (std::int64_t v : values)
+        insert.bind(index++, v);
+    insert.bindBlob(index, blob, bytes);
+    insert.step();
+}
+
+} // namespace
+
+TEST(ColmapMalformedContent, BlobShapeWhoseByteCountWrapsAroundIsRefused)
+{
+    const std::string path = emptyColmapDatabase("malformed_wrapping_shape");
+    // 768614336404564651 x 6 float32 is 2^64 + 8 bytes: 8 modulo 2^64, the blob's size.
+    const std::int64_t wrappingRows = 768614336404564651;
+    const unsigned char eightBytes[8] = {};
+    insertRow(path, "INSERT INTO keypoints VALUES (1, ?, ?, ?)", {wrappingRows, 6}, eightBytes, 8);
+    // 2^61 + 1 match pairs of two uint32 are 2^64 + 8 bytes too.
+    const std::int64_t wrappingMatches = (std::int64_t(1) << 61) + 1;
+    insertRow(path, "INSERT INTO matches VALUES (2147483650, ?, ?, ?)", {wrappingMatches, 2},
+              eightBytes, 8);
+    // A column count that wraps on its own.
+    insertRow(path, "INSERT INTO keypoints VALUES (2, ?, ?, ?)", {1, std::int64_t(1) << 62},
+              eightBytes, 0);
+
+    ColmapDatabase db(path, true);
+    EXPECT_THROW(db.keypoints(1), DatabaseError);
+    EXPECT_THROW(db.matches(2147483650), DatabaseError);
+    EXPECT_THROW(db.keypoints(2), DatabaseError);
+}
+
+TEST(ColmapMalformedContent, KeypointFarOutsideTheImageIsUnusableNotAnError)
+{
+    const std::string path = emptyColmapDatabase("malformed_far_keypoint");
+    // PINHOLE f = 500, principal point (320, 240), known focal length.
+    const double params[] = {500, 500, 320, 240};
+    insertRow(path, "INSERT INTO cameras VALUES (1, 1, 640, 480, ?, 1)", {}, params, sizeof params);
+    {
+        SqliteConnection connection(path, false);
+        connection.execute("INSERT INTO images VALUES (1, 'a.jpg', 1), (2, 'b.jpg', 1)");
+    }
+    // 40 points of a scene seen from two cameras 1 apart, projected: keypoints x, y (cols 2).
+    const int n = 40;
+    cv::RNG rng(7);
+    std::vector<float> kp1, kp2;
+    for (int i = 0; i < n; ++i) {
+        const cv::Vec3d X(rng.uniform(-2.0, 2.0), rng.uniform(-1.5, 1.5), rng.uniform(4.0, 8.0));
+        const cv::Vec3d Y = X - cv::Vec3d(1, 0, 0);
+        kp1.push_back(static_cast<float>(500 * X[0] / X[2] + 320));
+        kp1.push_back(static_cast<float>(500 * X[1] / X[2] + 240));
+        kp2.push_back(static_cast<float>(500 * Y[0] / Y[2] + 320));
+        kp2.push_back(static_cast<float>(500 * Y[1] / Y[2] + 240));
+    }
+    // One keypoint 1e12 pixels away: 2e9 focal lengths, beyond the module's 1e8.
+    kp1[2 * 5] = 1e12f;
+    insertRow(path, "INSERT INTO keypoints VALUES (1, ?, 2, ?)", {n}, kp1.data(),
+              kp1.size() * sizeof(float));
+    insertRow(path, "INSERT INTO keypoints VALUES (2, ?, 2, ?)", {n}, kp2.data(),
+              kp2.size() * sizeof(float));
+    std::vector<FeatureMatch> matches;
+    for (std::uint32_t i = 0; i < static_cast<std::uint32_t>(n); ++i)
+        matches.push_back({i, i});
+    insertRow(path, "INSERT INTO matches VALUES (?, ?, 2, ?)", {pairIdOf(1, 2), n}, matches.data(),
+              matches.size() * sizeof(FeatureMatch));
+
+    ColmapDatabase db(path, true);
+    Verification verification;
+    ASSERT_NO_THROW(verification = verifyPairs(db, VerificationOptions()));
+    ASSERT_EQ(verification.pairs.size(), 1u);
+    EXPECT_EQ(verification.pairs[0].unusableMatches, 1);
+    EXPECT_TRUE(verification.pairs[0].estimated);
+    // The 39 exact correspondences are the inliers of a calibrated pair.
+    EXPECT_EQ(verification.records[0].config, CONFIG_CALIBRATED);
+    EXPECT_EQ(verification.records[0].inlierMatches.size(), 39u);
+}

@@ -98,7 +98,15 @@ CameraIntrinsics cameraIntrinsics(const ColmapCamera& camera)
         c.fx = p[0], c.fy = p[1], c.cx = p[2], c.cy = p[3];
         c.k1 = p[4], c.k2 = p[5], c.p1 = p[6], c.p2 = p[7];
     }
-    if (!(c.fx > 0) || !(c.fy > 0)) throw DatabaseError(which + ": focal length is not positive");
+    // The module refuses a camera matrix whose determinant is not a normal double (it calls it
+    // singular): fx fy must neither underflow nor overflow, for these cameras and for the virtual
+    // camera of a pair (verify_pairs.cpp: the mean of two cameras' focal lengths). 1e-100 to 1e100
+    // pixels keeps every product of two far inside; no camera is anywhere near either end.
+    const double minFocal = 1e-100, maxFocal = 1e100;
+    for (double f : {c.fx, c.fy})
+        if (!(f >= minFocal && f <= maxFocal))
+            throw DatabaseError(which + ": focal length " + std::to_string(f) +
+                                " is not in [1e-100, 1e100] pixels");
     return c;
 }
 

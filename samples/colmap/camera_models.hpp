@@ -53,7 +53,9 @@ struct CameraIntrinsics
 };
 
 /** The camera's intrinsics; a DatabaseError naming the camera and its model for a model that is
-not supported, a wrong number of parameters, or a non-finite or non-positive focal length. */
+not supported, a wrong number of parameters, a non-finite parameter, or a focal length outside
+[1e-100, 1e100] pixels (zero, negative, or so far from any camera that the module would find the
+camera matrix singular). */
 CameraIntrinsics cameraIntrinsics(const ColmapCamera& camera);
 
 /** The pixel of a normalised point (the model's forward formula). */

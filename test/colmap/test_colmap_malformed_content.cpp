@@ -3,8 +3,10 @@
 //
 // A COLMAP database whose schema is right but whose content is not (the colmap fuzz target's
 // findings, fuzz/fuzz_colmap.cpp): a blob shape whose byte count wraps around is refused with a
-// DatabaseError, and a keypoint far outside any image makes its matches unusable instead of failing
-// the whole verification. The databases are built here with SQLite alone (no colmap needed).
+// DatabaseError, a keypoint far outside any image makes its matches unusable instead of failing
+// the whole verification, and a focal length for which the module would find the camera matrix
+// singular is refused before any estimate. The databases are built here with SQLite alone (no
+// colmap needed).
 
 #include "colmap/colmap_database.hpp"
 #include "colmap/pair_id.hpp"
@@ -82,17 +84,21 @@ TEST(ColmapMalformedContent, BlobShapeWhoseByteCountWrapsAroundIsRefused)
     EXPECT_THROW(db.keypoints(2), DatabaseError);
 }
 
-TEST(ColmapMalformedContent, KeypointFarOutsideTheImageIsUnusableNotAnError)
+namespace {
+
+/** Two images of one PINHOLE camera with `params` (fx, fy, cx, cy; a known focal length) and 40
+matched keypoints of a scene seen from two positions 1 apart, projected with f = 500 and principal
+point (320, 240); keypoint `farIndex` of the first image (if >= 0) moved to x = 1e12 px. */
+std::string twoViewDatabase(const std::string& name, const std::vector<double>& params,
+                            int farIndex)
 {
-    const std::string path = emptyColmapDatabase("malformed_far_keypoint");
-    // PINHOLE f = 500, principal point (320, 240), known focal length.
-    const double params[] = {500, 500, 320, 240};
-    insertRow(path, "INSERT INTO cameras VALUES (1, 1, 640, 480, ?, 1)", {}, params, sizeof params);
+    const std::string path = emptyColmapDatabase(name);
+    insertRow(path, "INSERT INTO cameras VALUES (1, 1, 640, 480, ?, 1)", {}, params.data(),
+              params.size() * sizeof(double));
     {
         SqliteConnection connection(path, false);
         connection.execute("INSERT INTO images VALUES (1, 'a.jpg', 1), (2, 'b.jpg', 1)");
     }
-    // 40 points of a scene seen from two cameras 1 apart, projected: keypoints x, y (cols 2).
     const int n = 40;
     cv::RNG rng(7);
     std::vector<float> kp1, kp2;
@@ -104,8 +110,7 @@ TEST(ColmapMalformedContent, KeypointFarOutsideTheImageIsUnusableNotAnError)
         kp2.push_back(static_cast<float>(500 * Y[0] / Y[2] + 320));
         kp2.push_back(static_cast<float>(500 * Y[1] / Y[2] + 240));
     }
-    // One keypoint 1e12 pixels away: 2e9 focal lengths, beyond the module's 1e8.
-    kp1[2 * 5] = 1e12f;
+    if (farIndex >= 0) kp1[2 * static_cast<std::size_t>(farIndex)] = 1e12f;
     insertRow(path, "INSERT INTO keypoints VALUES (1, ?, 2, ?)", {n}, kp1.data(),
               kp1.size() * sizeof(float));
     insertRow(path, "INSERT INTO keypoints VALUES (2, ?, 2, ?)", {n}, kp2.data(),
@@ -115,7 +120,15 @@ TEST(ColmapMalformedContent, KeypointFarOutsideTheImageIsUnusableNotAnError)
         matches.push_back({i, i});
     insertRow(path, "INSERT INTO matches VALUES (?, ?, 2, ?)", {pairIdOf(1, 2), n}, matches.data(),
               matches.size() * sizeof(FeatureMatch));
+    return path;
+}
 
+} // namespace
+
+TEST(ColmapMalformedContent, KeypointFarOutsideTheImageIsUnusableNotAnError)
+{
+    // One keypoint 1e12 pixels away: 2e9 focal lengths, beyond the module's 1e8.
+    const std::string path = twoViewDatabase("malformed_far_keypoint", {500, 500, 320, 240}, 5);
     ColmapDatabase db(path, true);
     Verification verification;
     ASSERT_NO_THROW(verification = verifyPairs(db, VerificationOptions()));
@@ -125,4 +138,28 @@ TEST(ColmapMalformedContent, KeypointFarOutsideTheImageIsUnusableNotAnError)
     // The 39 exact correspondences are the inliers of a calibrated pair.
     EXPECT_EQ(verification.records[0].config, CONFIG_CALIBRATED);
     EXPECT_EQ(verification.records[0].inlierMatches.size(), 39u);
+}
+
+TEST(ColmapMalformedContent, FocalLengthTheModuleWouldFindSingularIsRefused)
+{
+    // fx fy of 1e-320 (a denormal), 1e-160 (its square underflows) and 1e200 (its square
+    // overflows): the module calls such a camera matrix singular; the database is refused before
+    // any estimate, with a DatabaseError naming the camera.
+    for (double f : {1e-320, 1e-160, 1e200}) {
+        const std::string path = twoViewDatabase("malformed_focal", {f, f, 320, 240}, -1);
+        ColmapDatabase db(path, true);
+        try {
+            verifyPairs(db, VerificationOptions());
+            ADD_FAILURE() << "focal length " << f << " accepted";
+        } catch (const DatabaseError& e) {
+            EXPECT_NE(std::string(e.what()).find("camera 1"), std::string::npos) << e.what();
+        }
+    }
+    // The ends of the accepted range go through (the points are then far outside or deep inside
+    // the image: no pair verifies, but nothing fails).
+    for (double f : {1e-100, 1e100}) {
+        const std::string path = twoViewDatabase("malformed_focal", {f, f, 320, 240}, -1);
+        ColmapDatabase db(path, true);
+        EXPECT_NO_THROW(verifyPairs(db, VerificationOptions())) << "focal length " << f;
+    }
 }

@@ -13,7 +13,7 @@
 #   FUZZ_SEED=1       libFuzzer's -seed
 #   FUZZ_JOBS=1       parallel fuzzing processes per target (libFuzzer -fork; a long run on 2 cores)
 #   FUZZ_FAST=1       use the fast tree build-fuzz-fast instead (built here if missing): UBSan only,
-#                     optimised, for long runs (4 to 10 times the executions per second of the
+#                     optimised, for long runs (4 to 10 times the executions per second of the -O1
 #                     ASan + UBSan tree; memory errors are what the ASan runs are for)
 #
 # One line per target: "fuzz <target>: N executions in S s (R/s), cov E edges, 0 crashes"; the last
@@ -44,7 +44,7 @@ if [[ $missing -ne 0 && "${FUZZ_FAST:-0}" != 0 ]]; then
         CXXFLAGS="-g $ubsan -fsanitize=fuzzer-no-link -fno-sanitize-coverage=trace-cmp" \
         cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=Release -DESSENTIAL_BUILD_FUZZ=ON \
         -DESSENTIAL_BUILD_PERF=OFF -DESSENTIAL_BUILD_BENCH=OFF -DESSENTIAL_OPENCV_OWN_TESTS=OFF \
-        -DESSENTIAL_BUILD_PYTHON=OFF -DESSENTIAL_BUILD_SAMPLES=OFF >/dev/null
+        -DESSENTIAL_BUILD_PYTHON=OFF >/dev/null # samples on: the colmap target needs the COLMAP sample's library
     cmake --build "$build_dir" -j"${JOBS:-$(nproc)}" $(printf -- '--target essential_fuzz_%s ' "${targets[@]}")
 elif [[ $missing -ne 0 ]]; then
     scripts/sanitize.sh -R '^$' >/dev/null # builds the tree, runs no test

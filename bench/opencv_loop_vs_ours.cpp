@@ -93,7 +93,8 @@ Outcome run(const essential_test::SyntheticScene& s, const cv::essential::Essent
     cv::Mat mask, R, t;
     const auto t0 = std::chrono::steady_clock::now();
     const cv::Mat E = cv::essential::findEssentialMatIter(s.px1, s.px2, K, params, mask, &report);
-    const int inFront = E.empty() ? 0 : cv::essential::recoverPoseIter(E, s.px1, s.px2, K, R, t, mask);
+    const int inFront =
+        E.empty() ? 0 : cv::essential::recoverPoseIter(E, s.px1, s.px2, K, R, t, mask);
     o.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     o.solverCalls = report.hypothesesGenerated;
     if (inFront > 0 && R.rows == 3 && t.rows == 3) {

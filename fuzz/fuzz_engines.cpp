@@ -174,8 +174,8 @@ void runOne(FuzzInput& in)
             }
         } else {
             const double focal = in.pick(3) == 0 ? in.anyDouble() : 50.0 + in.pick(1000);
-            inFront =
-                ess::recoverPoseIter(E, p1, p2, R, t, focal, cv::Point2d(in.pick(640), 240), poseMask);
+            inFront = ess::recoverPoseIter(E, p1, p2, R, t, focal, cv::Point2d(in.pick(640), 240),
+                                           poseMask);
         }
         checkPose(inFront, R, t, n);
         break;

@@ -180,7 +180,7 @@ void runOne(FuzzInput& in)
         } else if (api == 8) {
             const double focal = in.pick(2) ? in.anyDouble() : 50.0 + in.pick(1000);
             inFront = ess::recoverPoseIter(E, p1, p2, R, t, focal,
-                                       cv::Point2d(in.anyDouble(), in.anyDouble()), mask);
+                                           cv::Point2d(in.anyDouble(), in.anyDouble()), mask);
         } else {
             cv::Mat X;
             const double d = in.pick(2) ? in.anyDouble() : 50.0;

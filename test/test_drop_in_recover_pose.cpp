@@ -204,23 +204,25 @@ Outcome run(bool ours, PoseOverload o, const cv::Mat& Ein, const PointArray& a, 
     try {
         switch (o) {
         case PoseOverload::Camera:
-            out.count = ours ? ess::recoverPoseIter(Ein, a.arr(), b.arr(), K, out.R, out.t, mask.arr())
-                             : cv::recoverPose(Ein, a.arr(), b.arr(), K, out.R, out.t, mask.arr());
+            out.count =
+                ours ? ess::recoverPoseIter(Ein, a.arr(), b.arr(), K, out.R, out.t, mask.arr())
+                     : cv::recoverPose(Ein, a.arr(), b.arr(), K, out.R, out.t, mask.arr());
             break;
         case PoseOverload::Focal:
             out.count =
-                ours ? ess::recoverPoseIter(Ein, a.arr(), b.arr(), out.R, out.t, focal, pp, mask.arr())
+                ours ? ess::recoverPoseIter(Ein, a.arr(), b.arr(), out.R, out.t, focal, pp,
+                                            mask.arr())
                      : cv::recoverPose(Ein, a.arr(), b.arr(), out.R, out.t, focal, pp, mask.arr());
             break;
         case PoseOverload::DistanceThresh:
             out.count = ours ? ess::recoverPoseIter(Ein, a.arr(), b.arr(), K, out.R, out.t,
-                                                distanceThresh, mask.arr(), out.X)
+                                                    distanceThresh, mask.arr(), out.X)
                              : cv::recoverPose(Ein, a.arr(), b.arr(), K, out.R, out.t,
                                                distanceThresh, mask.arr(), out.X);
             break;
         case PoseOverload::TwoCameras:
-            out.count = ours ? ess::recoverPoseIter(a.arr(), b.arr(), K, zeros, K, zeros, out.E, out.R,
-                                                out.t, method, 0.999, 1.0, mask.arr())
+            out.count = ours ? ess::recoverPoseIter(a.arr(), b.arr(), K, zeros, K, zeros, out.E,
+                                                    out.R, out.t, method, 0.999, 1.0, mask.arr())
                              : cv::recoverPose(a.arr(), b.arr(), K, zeros, K, zeros, out.E, out.R,
                                                out.t, method, 0.999, 1.0, mask.arr());
             break;
@@ -446,8 +448,8 @@ TEST(DropInRecoverPose, TwoCameraFormEstimatesAsOpenCV)
         cv::Mat Ec, Rc, tc, mc, Eu, Ru, tu, mu;
         const int nc = cv::recoverPose(p1, p2, cv::Mat(K1), d1, cv::Mat(K2), d2, Ec, Rc, tc,
                                        cv::RANSAC, 0.999, 1.0, mc);
-        const int nu = cv::essential::recoverPoseIter(p1, p2, cv::Mat(K1), d1, cv::Mat(K2), d2, Eu, Ru,
-                                                  tu, cv::RANSAC, 0.999, 1.0, mu);
+        const int nu = cv::essential::recoverPoseIter(p1, p2, cv::Mat(K1), d1, cv::Mat(K2), d2, Eu,
+                                                      Ru, tu, cv::RANSAC, 0.999, 1.0, mu);
         EXPECT_EQ(describe(Eu), describe(Ec));
         EXPECT_EQ(describe(mu), describe(mc));
         // Both near the truth. Measured over seeds 400 to 439: ours within 0.04 degrees

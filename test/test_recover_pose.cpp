@@ -85,7 +85,8 @@ TEST(RecoverPose, NoiseFreeScenesGiveTheTruePose)
         SCOPED_TRACE(seed);
         const SyntheticScene s = makeScene(inlierScene(0.0), seed);
         cv::Mat R, t;
-        const int n = cv::essential::recoverPoseIter(cv::Mat(s.E), s.px1, s.px2, cv::Mat(s.K), R, t);
+        const int n =
+            cv::essential::recoverPoseIter(cv::Mat(s.E), s.px1, s.px2, cv::Mat(s.K), R, t);
         ASSERT_EQ(R.rows, 3);
         ASSERT_EQ(R.cols, 3);
         ASSERT_EQ(R.type(), CV_64F);
@@ -109,7 +110,8 @@ TEST(RecoverPose, NoisyScenesGiveTheTruePoseWithTheTrueE)
         SCOPED_TRACE(seed);
         const SyntheticScene s = makeScene(inlierScene(0.001), seed);
         cv::Mat R, t;
-        const int n = cv::essential::recoverPoseIter(cv::Mat(s.E), s.px1, s.px2, cv::Mat(s.K), R, t);
+        const int n =
+            cv::essential::recoverPoseIter(cv::Mat(s.E), s.px1, s.px2, cv::Mat(s.K), R, t);
         EXPECT_LT(rotationErrorDeg(toMatx33(R), s.R), 1e-4);
         EXPECT_LT(translationErrorDeg(toVec3(t), s.t), 1e-4);
         EXPECT_GT(n, static_cast<int>(0.6 * s.px1.size()));
@@ -232,7 +234,8 @@ TEST(RecoverPose, DeepSceneShortBaselineRightSignWhereOpenCVFails)
         SCOPED_TRACE(seed);
         const SyntheticScene s = makeScene(deepScene(0.001), seed);
         cv::Mat R, t;
-        const int n = cv::essential::recoverPoseIter(cv::Mat(s.E), s.px1, s.px2, cv::Mat(s.K), R, t);
+        const int n =
+            cv::essential::recoverPoseIter(cv::Mat(s.E), s.px1, s.px2, cv::Mat(s.K), R, t);
         EXPECT_LT(rotationErrorDeg(toMatx33(R), s.R), 1e-3);
         EXPECT_GT(toVec3(t).dot(s.t), 0.99);
         EXPECT_GT(n, static_cast<int>(s.px1.size()) / 2);
@@ -254,7 +257,8 @@ TEST(RecoverPose, GivenMaskRestrictsAndKeepsItsValues)
     const cv::Mat input = mask.clone();
     cv::Mat maskCv = mask.clone();
     cv::Mat R, t, Rcv, tcv;
-    const int n = cv::essential::recoverPoseIter(cv::Mat(s.E), s.px1, s.px2, cv::Mat(s.K), R, t, mask);
+    const int n =
+        cv::essential::recoverPoseIter(cv::Mat(s.E), s.px1, s.px2, cv::Mat(s.K), R, t, mask);
     const int ncv = cv::recoverPose(cv::Mat(s.E), s.px1, s.px2, cv::Mat(s.K), Rcv, tcv, maskCv);
 
     ASSERT_EQ(mask.rows, N);
@@ -280,7 +284,8 @@ TEST(RecoverPose, MaskCreatedWhenEmptyMarksWith255)
     const SyntheticScene s = makeScene(inlierScene(0.0), 52);
     const int N = static_cast<int>(s.px1.size());
     cv::Mat R, t, mask, maskCv, Rcv, tcv;
-    const int n = cv::essential::recoverPoseIter(cv::Mat(s.E), s.px1, s.px2, cv::Mat(s.K), R, t, mask);
+    const int n =
+        cv::essential::recoverPoseIter(cv::Mat(s.E), s.px1, s.px2, cv::Mat(s.K), R, t, mask);
     ASSERT_EQ(mask.rows, N);
     ASSERT_EQ(mask.cols, 1);
     ASSERT_EQ(mask.type(), CV_8U);
@@ -315,7 +320,8 @@ TEST(RecoverPose, MaskAllZeroGivesNoPoints)
     const SyntheticScene s = makeScene(inlierScene(0.0), 53);
     const int N = static_cast<int>(s.px1.size());
     cv::Mat R, t, mask(N, 1, CV_8U, cv::Scalar(0));
-    const int n = cv::essential::recoverPoseIter(cv::Mat(s.E), s.px1, s.px2, cv::Mat(s.K), R, t, mask);
+    const int n =
+        cv::essential::recoverPoseIter(cv::Mat(s.E), s.px1, s.px2, cv::Mat(s.K), R, t, mask);
     EXPECT_EQ(n, 0);
     EXPECT_EQ(cv::countNonZero(mask), 0);
     EXPECT_EQ(mask.rows, N);
@@ -329,7 +335,8 @@ TEST(RecoverPose, ZeroEssentialMatrixGivesTheNoPoseAnswer)
     const SyntheticScene s = makeScene(inlierScene(0.0), 55);
     const cv::Mat zero = cv::Mat::zeros(3, 3, CV_64F);
     cv::Mat R, t, X, mask;
-    EXPECT_EQ(cv::essential::recoverPoseIter(zero, s.px1, s.px2, cv::Mat(s.K), R, t, 50.0, mask, X), 0);
+    EXPECT_EQ(cv::essential::recoverPoseIter(zero, s.px1, s.px2, cv::Mat(s.K), R, t, 50.0, mask, X),
+              0);
     EXPECT_EQ(cv::norm(R, cv::Mat::eye(3, 3, CV_64F), cv::NORM_INF), 0.0);
     EXPECT_EQ(cv::norm(t), 0.0);
     EXPECT_TRUE(X.empty());
@@ -344,7 +351,8 @@ TEST(RecoverPose, RowVectorMaskAccepted)
     const int N = static_cast<int>(s.px1.size());
     cv::Mat R, t, mask(1, N, CV_8U, cv::Scalar(1));
     mask.colRange(0, N / 2).setTo(0);
-    const int n = cv::essential::recoverPoseIter(cv::Mat(s.E), s.px1, s.px2, cv::Mat(s.K), R, t, mask);
+    const int n =
+        cv::essential::recoverPoseIter(cv::Mat(s.E), s.px1, s.px2, cv::Mat(s.K), R, t, mask);
     EXPECT_EQ(n, N - N / 2);
     EXPECT_EQ(cv::countNonZero(mask), n);
     EXPECT_EQ(static_cast<int>(mask.total()), N);
@@ -412,7 +420,7 @@ TEST(RecoverPose, ZeroEssentialReturnsZero)
     const int N = static_cast<int>(s.px1.size());
     cv::Mat R, t, mask(N, 1, CV_8U, cv::Scalar(1));
     const int n = cv::essential::recoverPoseIter(cv::Mat::zeros(3, 3, CV_64F), s.px1, s.px2,
-                                             cv::Mat(s.K), R, t, mask);
+                                                 cv::Mat(s.K), R, t, mask);
     EXPECT_EQ(n, 0);
     EXPECT_EQ(cv::countNonZero(mask), 0);
     EXPECT_LT(cv::norm(R, cv::Mat::eye(3, 3, CV_64F), cv::NORM_INF), 1e-15);
@@ -442,7 +450,7 @@ TEST(RecoverPose, FocalOverloadAndLayoutsAgree)
 
     cv::Mat R, t;
     const int nf = cv::essential::recoverPoseIter(E, s.px1, s.px2, R, t, s.K(0, 0),
-                                              cv::Point2d(s.K(0, 2), s.K(1, 2)));
+                                                  cv::Point2d(s.K(0, 2), s.K(1, 2)));
     EXPECT_EQ(nf, n0);
     EXPECT_LT(cv::norm(R, R0, cv::NORM_INF), 1e-12);
     EXPECT_LT(cv::norm(t, t0, cv::NORM_INF), 1e-12);

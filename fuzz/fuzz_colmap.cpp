@@ -174,7 +174,7 @@ struct RunOptions
         verification.unverifiedOnly = (bits >> 3) & 1;
         verification.chunkSize = 1 + ((bits >> 4) & 3);
         verification.threads = 1;
-        verification.params.maxIters = 20 + 10 * ((bits >> 6) & 3);
+        verification.params.maxIterations = 20 + 10 * ((bits >> 6) & 3);
     }
 };
 

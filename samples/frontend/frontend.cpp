@@ -145,8 +145,8 @@ std::vector<cv::DMatch> flannNearest(const Features& features1, const Features& 
     cv::Ptr<cv::flann::IndexParams> index;
     if (features1.descriptor == Descriptor::Patch)
         index = cv::makePtr<cv::flann::KDTreeIndexParams>(4);
-    else // 12 tables of 20-bit keys, one probe level: the setting measured in docs/FRONTEND.md
-        index = cv::makePtr<cv::flann::LshIndexParams>(12, 20, 1);
+    else // 4 tables of 12-bit keys, one probe level: the fastest of those measured (docs/FRONTEND.md)
+        index = cv::makePtr<cv::flann::LshIndexParams>(4, 12, 1);
     cv::FlannBasedMatcher matcher(index, cv::makePtr<cv::flann::SearchParams>(32));
     std::vector<std::vector<cv::DMatch>> knn;
     matcher.knnMatch(features2.descriptors, features1.descriptors, knn, 1);

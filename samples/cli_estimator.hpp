@@ -172,7 +172,8 @@ inline std::string estimatorHelp(bool lists)
                 ") or mixes such as gn+nister or\n"
                 "                         gn:3+nister:1 (default gn+nister)\n"
                 "  --budget-ms LIST       time budgets in milliseconds, comma separated, 0 for\n"
-                "                         none (default 0). ";
+                "                         none (default 0).\n"
+                "                         ";
     else
         help += "  --solver NAME          a registered solver (" + solvers +
                 ")\n"
@@ -192,9 +193,9 @@ inline std::string estimatorHelp(bool lists)
             "                         for cv::essential and for OpenCV's comparison run\n";
     help += "  --sampler S            uniform (default, the module's own: uniform until the\n"
             "                         confidence cap, then local and uniform in turn), prosac\n"
-            "                         (matches handed over best first by descriptor distance,\n"
-            "                         or in file order with --matches), napsac (all samples\n"
-            "                         local) or pnapsac (local and uniform in turn)\n";
+            "                         (the matches handed over best first: by descriptor\n"
+            "                         distance, or in a matches file's order), napsac (all\n"
+            "                         samples local) or pnapsac (local and uniform in turn)\n";
     help +=
         "  --threshold-px PX      inlier threshold on the Sampson distance, pixels (default 1)\n";
     help += "  --max-iterations N     iteration cap of both estimators (default 1000, as OpenCV)\n";

@@ -91,8 +91,8 @@ struct FrontEndParams
     Descriptor descriptor = Descriptor::UprightBrief;
 
     /** How the corners are matched; brute force by default (exact). Matcher::Grid is the fast mode
-    (docs/FRONTEND.md, "Faster matching": on the rail and real pairs it cuts the matching from
-    0.2-1 s to tens of milliseconds). Grid limits the corners when they are detected, so
+    (docs/FRONTEND.md, "Faster matching": 10-82 ms of matching on the rail and real pairs, 5 to 420
+    times less than brute force). Grid limits the corners when they are detected, so
     detectAndDescribe() and matchFeatures() must get the same setting. */
     Matcher matcher = Matcher::BruteForce;
 

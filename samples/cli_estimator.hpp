@@ -152,6 +152,31 @@ inline cv::essential::EssentialParams estimatorParams(const EstimatorOptions& op
     return params;
 }
 
+/** Fails (exit status 2) when the library rejects a combination of the options (an engine with a
+method, sampler or budget it does not support), before any image is read: one call of
+findEssentialMatIter per solver and budget on ten made-up correspondences, capped at one
+iteration (and a budget of 1 us), so that it takes microseconds. */
+inline void checkEstimatorCombination(const EstimatorOptions& options)
+{
+    std::vector<cv::Point2f> points1, points2;
+    for (int i = 0; i < 10; ++i) {
+        points1.emplace_back(static_cast<float>(37 * i % 11), static_cast<float>(53 * i % 7));
+        points2.emplace_back(points1.back().x + 0.5f, points1.back().y + 0.25f * (i % 3));
+    }
+    for (const std::string& solver : options.solvers)
+        for (double budgetMs : options.budgetsMs) {
+            cv::essential::EssentialParams params =
+                estimatorParams(options, solver, budgetMs > 0 ? 1e-3 : 0.0);
+            params.maxIters = 1;
+            try {
+                cv::essential::findEssentialMatIter(points1, points2, cv::Matx33d::eye(), params,
+                                                    cv::noArray());
+            } catch (const cv::Exception& e) {
+                fail("these options do not go together: " + e.err, 2);
+            }
+        }
+}
+
 /** The method of cv::findEssentialMat for the comparison run. */
 inline int opencvMethod(const EstimatorOptions& options)
 {

@@ -181,6 +181,7 @@ Options parseOptions(int argc, char** argv)
              2);
     if (!options.draw.empty() && options.image1.empty())
         fail("--draw needs the two images (give IMG1 IMG2 with --matches)", 2);
+    essential_samples::checkEstimatorCombination(options.estimator);
     if (options.camera.empty() == options.cameraFile.empty())
         fail(options.camera.empty()
                  ? "missing camera: give --camera fx,fy,cx,cy or --camera-file FILE"

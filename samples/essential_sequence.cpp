@@ -198,6 +198,7 @@ Options parseOptions(int argc, char** argv)
                  " (see --help)",
              2);
     options.dir = line.positional[0];
+    essential_samples::checkEstimatorCombination(options.estimator);
     if (!options.camera.empty() && !options.cameraFile.empty())
         fail("give only one of --camera and --camera-file", 2);
     return options;

@@ -3,7 +3,8 @@
 //
 // The input of essential_sequence: the frames of a directory and their ground-truth poses.
 // Frames: DIR/NNN.jpg, .jpeg or .png (the name a frame number, any number of digits), or the images
-// DIR/rgb.txt lists (`timestamp path` per line, path relative to DIR: the TUM RGB-D layout), then
+// DIR/rgb.txt lists (`timestamp path` per line, path relative to DIR or absolute: the TUM RGB-D
+// layout), then
 // numbered 0, 1, ... in the order of the list. Poses, one of three formats (told apart by the
 // number of values per line, or named):
 // - rail: `k r00 r01 .. r22 Cx Cy Cz`, frame number, world-to-camera rotation, camera centre;
@@ -98,7 +99,7 @@ inline SequenceFrames listFrames(const std::string& dir)
                 fail("malformed frame list '" + list + "': line " + std::to_string(lineNumber) +
                      " is not `timestamp path`");
             const int k = static_cast<int>(frames.paths.size());
-            frames.paths[k] = dir + "/" + path;
+            frames.paths[k] = path[0] == '/' ? path : dir + "/" + path;
             frames.timestamps[k] = timestamp;
         }
         frames.fromList = true;

@@ -6,7 +6,8 @@
 // three lines) or OpenCV FileStorage (.yml, .yaml, .json, .xml, optionally .gz) as written by
 // cv::FileStorage after cv::calibrateCamera: `camera_matrix` and `distortion_coefficients` (the
 // names of OpenCV's calibration sample), or `K` and `D`, and optionally `image_width` and
-// `image_height`. Header-only; nothing here is part of the library.
+// `image_height`; or KITTI odometry's calib.txt (P0). Header-only; nothing here is part of the
+// library.
 
 #ifndef ESSENTIAL_SAMPLES_CLI_CAMERA_HPP
 #define ESSENTIAL_SAMPLES_CLI_CAMERA_HPP
@@ -17,6 +18,8 @@
 
 #include <cmath>
 #include <fstream>
+#include <istream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -158,15 +161,41 @@ inline Camera readFileStorageCamera(const std::string& path)
     return camera;
 }
 
-/** A camera file: FileStorage by extension (see the top of this file), otherwise text with
-`fx fy cx cy [width height]` on one line, or a 3 x 3 camera matrix as three lines of three numbers
-(blank lines and lines starting with '#' ignored). Fails (exit status 1) with one line naming the
-file. */
+/** KITTI odometry's calib.txt: lines `P0: p00 p01 .. p23` (the 3 x 4 projection matrices of the
+cameras, row by row); the camera matrix is the left 3 x 3 block of P0, the left grey camera. */
+inline Camera readKittiCalibration(std::istream& in, const std::string& path)
+{
+    const std::string malformed = "malformed camera file '" + path + "'";
+    std::string line;
+    while (std::getline(in, line)) {
+        if (line.rfind("P0:", 0) != 0) continue;
+        std::istringstream stream(line.substr(3));
+        std::vector<double> p;
+        std::string token;
+        while (stream >> token) {
+            double value;
+            if (!parseDouble(token, value)) fail(malformed + ": '" + token + "' is not a number");
+            p.push_back(value);
+        }
+        if (p.size() != 12) fail(malformed + ": P0 must have 12 numbers (a 3 x 4 matrix)");
+        Camera camera;
+        camera.K = cv::Matx33d(p[0], p[1], p[2], p[4], p[5], p[6], p[8], p[9], p[10]);
+        checkCamera(camera.K, path);
+        return camera;
+    }
+    fail(malformed + ": no line `P0: ...` (KITTI calib.txt)");
+}
+
+/** A camera file: FileStorage by extension (see the top of this file), KITTI's calib.txt (when it
+starts with 'P'), otherwise text with `fx fy cx cy [width height]` on one line, or a 3 x 3 camera
+matrix as three lines of three numbers (blank lines and lines starting with '#' ignored). Fails
+(exit status 1) with one line naming the file. */
 inline Camera readCameraFile(const std::string& path)
 {
     if (isFileStoragePath(path)) return readFileStorageCamera(path);
     std::ifstream file(path);
     if (!file) fail("cannot open camera file '" + path + "'");
+    if (file.peek() == 'P') return readKittiCalibration(file, path);
     const std::vector<std::vector<double>> rows =
         readNumberRows(file, "malformed camera file '" + path + "'");
 

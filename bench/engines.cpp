@@ -144,14 +144,15 @@ int main(int argc, char** argv)
                         n, ratio, problems, cv::essential::EssentialParams().solver.c_str());
             std::printf("| engine | budget ms | reliability | median ms | p95 ms | p95 / budget |\n"
                         "|---|---|---|---|---|---|\n");
-            for (int engine : {cv::essential::ENGINE_ADAPTIVE, cv::essential::ENGINE_PREEMPTIVE})
+            for (cv::essential::EssentialEngine engine :
+                 {cv::essential::ENGINE_ADAPTIVE, cv::essential::ENGINE_PREEMPTIVE})
                 for (double T : budgets) {
                     cv::essential::EssentialParams params;
                     params.engine = engine;
                     params.timeBudgetMs = T;
                     // Let the budget, not the confidence or the cap, end the search.
                     params.confidence = 1.0 - 1e-12;
-                    params.maxIters = 100000000;
+                    params.maxIterations = 100000000;
                     const Outcome o = runAll(scenes, params);
                     const double p95 = percentile(o.ms, 0.95);
                     std::printf(

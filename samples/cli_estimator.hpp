@@ -35,9 +35,9 @@ struct EstimatorOptions
     descriptor order is an option, not the default: on the front end's best 20% of the rail
     matches it took twice the time and got one pose of 54 wrong where uniform got none
     (docs/HARD_PAIRS.md). */
-    int sampler = cv::SAMPLING_UNIFORM;
+    cv::SamplingMethod sampler = cv::SAMPLING_UNIFORM;
     double thresholdPx = cv::essential::EssentialParams().threshold;
-    int maxIterations = cv::essential::EssentialParams().maxIters;
+    int maxIterations = cv::essential::EssentialParams().maxIterations;
     bool maxIterationsGiven = false;
     std::uint64_t seed = cv::essential::EssentialParams().seed;
 };
@@ -138,16 +138,16 @@ inline cv::essential::EssentialParams estimatorParams(const EstimatorOptions& op
     cv::essential::EssentialParams params;
     params.solver = solver;
     params.engine = options.engine;
-    params.method = options.lmeds ? cv::LMEDS : cv::RANSAC;
+    params.score = options.lmeds ? cv::SCORE_METHOD_LMEDS : cv::SCORE_METHOD_MSAC;
     params.sampler = options.sampler;
     params.threshold = options.thresholdPx;
-    params.maxIters = options.maxIterations;
+    params.maxIterations = options.maxIterations;
     params.seed = options.seed;
     if (budgetMs > 0) {
         // The budget, not the confidence or (unless given) the cap, ends the search.
         params.timeBudgetMs = budgetMs;
         params.confidence = 1.0 - 1e-12;
-        if (!options.maxIterationsGiven) params.maxIters = 100000000;
+        if (!options.maxIterationsGiven) params.maxIterations = 100000000;
     }
     return params;
 }
@@ -167,7 +167,7 @@ inline void checkEstimatorCombination(const EstimatorOptions& options)
         for (double budgetMs : options.budgetsMs) {
             cv::essential::EssentialParams params =
                 estimatorParams(options, solver, budgetMs > 0 ? 1e-3 : 0.0);
-            params.maxIters = 1;
+            params.maxIterations = 1;
             try {
                 cv::essential::findEssentialMatIter(points1, points2, cv::Matx33d::eye(), params,
                                                     cv::noArray());

@@ -56,7 +56,7 @@ typedef std::function<void(std::size_t written)> RowWritten;
 
 /** Inserts or replaces the rows of `records` in two_view_geometries, in one transaction: on any
 error (SQLite's, or an exception from `afterRow`) nothing is written. No other row or table is
-touched. */
+touched. A database that fails SQLite's quick_check is refused (DatabaseError) before any row. */
 void writeTwoViewGeometries(ColmapDatabase& database,
                             const std::vector<TwoViewGeometryRecord>& records,
                             const RowWritten& afterRow = RowWritten());

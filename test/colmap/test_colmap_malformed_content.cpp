@@ -5,11 +5,13 @@
 // findings, fuzz/fuzz_colmap.cpp): a blob shape whose byte count wraps around is refused with a
 // DatabaseError, a keypoint far outside any image makes its matches unusable instead of failing
 // the whole verification, and a focal length for which the module would find the camera matrix
-// singular is refused before any estimate. The databases are built here with SQLite alone (no
-// colmap needed).
+// singular is refused before any estimate; a corrupt file SQLite reads without complaint is
+// refused before the write, which would have damaged it for good. The databases are built here with
+// SQLite alone (no colmap needed).
 
 #include "colmap/colmap_database.hpp"
 #include "colmap/pair_id.hpp"
+#include "colmap/two_view_geometry.hpp"
 #include "colmap/verify_pairs.hpp"
 
 #include <sqlite3.h>
@@ -20,6 +22,8 @@
 
 #include <cstdint>
 #include <cstdio>
+#include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -162,4 +166,34 @@ TEST(ColmapMalformedContent, FocalLengthTheModuleWouldFindSingularIsRefused)
         ColmapDatabase db(path, true);
         EXPECT_NO_THROW(verifyPairs(db, VerificationOptions())) << "focal length " << f;
     }
+}
+
+TEST(ColmapMalformedContent, CorruptDatabaseRefusedBeforeTheWrite)
+{
+    // The fuzz target's input (an options byte, then the file): a database of the rail seed whose
+    // b-tree pages 1 and 22 both claim a child page. SQLite reads it without complaint; writing
+    // two_view_geometries into it made it unreadable ("malformed database schema").
+    std::ifstream in(COLMAP_TEST_CORRUPT_INPUT, std::ios::binary);
+    const std::vector<char> input((std::istreambuf_iterator<char>(in)),
+                                  std::istreambuf_iterator<char>());
+    ASSERT_GT(input.size(), 100u);
+    const std::string path = std::string(COLMAP_TEST_WORK) + "/malformed_corrupt.db";
+    std::ofstream(path, std::ios::binary)
+        .write(input.data() + 1, std::streamsize(input.size() - 1));
+    const std::vector<char> before(input.begin() + 1, input.end());
+    {
+        ColmapDatabase db(path, false);
+        const Verification verification = verifyPairs(db, VerificationOptions());
+        ASSERT_FALSE(verification.records.empty());
+        try {
+            writeTwoViewGeometries(db, verification.records);
+            ADD_FAILURE() << "a corrupt database was written";
+        } catch (const DatabaseError& e) {
+            EXPECT_NE(std::string(e.what()).find("corrupt"), std::string::npos) << e.what();
+        }
+    }
+    std::ifstream after(path, std::ios::binary);
+    EXPECT_TRUE(std::vector<char>((std::istreambuf_iterator<char>(after)),
+                                  std::istreambuf_iterator<char>()) == before)
+        << "the file changed";
 }

@@ -98,7 +98,7 @@ def targets_table(table):
 
 
 def variants_table(table):
-    out = ["| N | inliers | solver | engine | reliable | median CPU ms | median wall ms |",
+    out = ["| N | inliers | solver | engine | reliable (2/5 deg) | median CPU ms | median wall ms |",
            "|---|---|---|---|---|---|---|"]
     for (n, ratio) in sorted(table, key=lambda k: (k[0], -k[1])):
         for method, e in sorted(table[(n, ratio)].items()):

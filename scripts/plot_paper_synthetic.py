@@ -2,7 +2,11 @@
 # Plots the CSVs of essential_paper_synthetic (bench/paper_synthetic.cpp) as the paper's
 # synthetic figures. Uses Debian's python3-matplotlib (hence /usr/bin/python3).
 #
-#   scripts/plot_paper_synthetic.py --csv DIR --figures DIR
+#   scripts/plot_paper_synthetic.py --csv DIR --figures DIR [--merge RUN_DIR ...]
+#
+# --merge joins the part-A CSVs (synthetic_figA.csv, synthetic_levels_A.csv) of several runs of
+# essential_paper_synthetic, e.g. one per --n, into DIR first (rows in the order of the runs), so
+# that a long sweep can be run in pieces.
 #
 # Writes synthetic_figA.png (time to 99% reliability against the inlier ratio, a panel per number
 # of matches), synthetic_figA_points.png (the same per solver, a
@@ -278,11 +282,34 @@ def figure_b(rows, path):
     plt.close(fig)
 
 
+def merge_part_a(runs, out):
+    """Concatenates the part-A CSVs of the run folders into out (one header each)."""
+    os.makedirs(out, exist_ok=True)
+    for name in ("synthetic_figA.csv", "synthetic_levels_A.csv"):
+        header, lines = None, []
+        for run in runs:
+            with open(os.path.join(run, name), newline="") as f:
+                rows = f.read().splitlines()
+            if not rows:
+                continue
+            if header is None:
+                header = rows[0]
+            elif rows[0] != header:
+                sys.exit(f"plot_paper_synthetic.py: {run}/{name} has other columns")
+            lines += rows[1:]
+        with open(os.path.join(out, name), "w", newline="") as f:
+            f.write("\n".join([header] + lines) + "\n")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__)
     ap.add_argument("--csv", required=True, help="folder with the bench's CSVs")
     ap.add_argument("--figures", required=True, help="folder for the PNGs")
+    ap.add_argument("--merge", nargs="+", metavar="RUN_DIR",
+                    help="join the part-A CSVs of these runs into --csv first")
     a = ap.parse_args()
+    if a.merge:
+        merge_part_a(a.merge, a.csv)
     os.makedirs(a.figures, exist_ok=True)
     written = []
     fig_a = os.path.join(a.csv, "synthetic_figA.csv")

@@ -45,6 +45,9 @@ LABELS = {
     "cv-USAC_MAGSAC": "cv::findEssentialMat USAC_MAGSAC",
 }
 MARKERS = {100: "o", 250: "s", 500: "^", 1000: "D"}
+# Figure A's methods differ by marker as well as colour.
+METHOD_MARKERS = {"lm": "o", "gn": "s", "nister": "^", "robust": "x", "ours-adaptive": "D",
+                  "cv-RANSAC": "v", "cv-USAC_MAGSAC": "P"}
 
 
 def read(path):
@@ -78,7 +81,8 @@ def figure_a(rows, column, target, path):
             ys = [p[1] for p in pts if not math.isnan(p[1])]
             if not xs:
                 continue
-            ax.plot(xs, ys, marker="o", ms=4, color=COLOURS[m], label=LABELS[m],
+            ax.plot(xs, ys, marker=METHOD_MARKERS.get(m, "o"), ms=5, mfc="none",
+                    color=COLOURS[m], label=LABELS[m],
                     linestyle="--" if m.startswith("cv-") else "-")
         ax.set_yscale("log")
         ax.set_title(f"N = {n} matches")
@@ -94,8 +98,8 @@ def figure_a(rows, column, target, path):
                 handles.append(h)
                 labels.append(lab)
     fig.legend(handles, labels, loc="lower center", ncol=min(4, len(labels)), fontsize=8)
-    fig.suptitle(f"Time to reach {target:.0%} reliability (missing point: not reached "
-                 "within the time cap)", fontsize=10)
+    fig.suptitle(f"Time to reach {target:.0%} reliability (RMS < 0.003; missing point: not "
+                 "reached within the time cap)", fontsize=10)
     fig.tight_layout(rect=(0, 0.07 + 0.02 * (len(labels) > 4), 1, 0.96))
     fig.savefig(path, dpi=110)
     plt.close(fig)

@@ -139,7 +139,7 @@ int main(int argc, char** argv)
                 cv::Mat mask;
                 cv::Mat E = cv::essential::findEssentialMatIter(s.px1, s.px2, K, params, mask);
                 if (E.empty()) return 0;
-                return cv::essential::recoverPose(E, s.px1, s.px2, K, R, t, mask);
+                return cv::essential::recoverPoseIter(E, s.px1, s.px2, K, R, t, mask);
             }));
             for (size_t m = 0; m < args.opencvMethods.size(); ++m) {
                 const int flag = methodFlag(args.opencvMethods[m]);

@@ -95,13 +95,13 @@ int main()
         {"recoverPose from E",
          [&](bool ours, const PointArray& a, const PointArray& b) {
              cv::Mat R, t;
-             ours ? ess::recoverPose(E, a.arr(), b.arr(), K, R, t)
+             ours ? ess::recoverPoseIter(E, a.arr(), b.arr(), K, R, t)
                   : cv::recoverPose(E, a.arr(), b.arr(), K, R, t);
          }},
         {"recoverPose, two cameras",
          [&](bool ours, const PointArray& a, const PointArray& b) {
              cv::Mat Eo, R, t;
-             ours ? ess::recoverPose(a.arr(), b.arr(), K, zeros, K, zeros, Eo, R, t)
+             ours ? ess::recoverPoseIter(a.arr(), b.arr(), K, zeros, K, zeros, Eo, R, t)
                   : cv::recoverPose(a.arr(), b.arr(), K, zeros, K, zeros, Eo, R, t);
          }},
     };

@@ -201,14 +201,15 @@ int main(int argc, char** argv)
                         n, ratio, problems, cv::essential::EssentialParams().solver.c_str());
             std::printf("| engine | budget ms | reliable | median wall ms | p95 wall ms | p95 / "
                         "budget |\n|---|---|---|---|---|---|\n");
-            for (int engine : {cv::essential::ENGINE_ADAPTIVE, cv::essential::ENGINE_PREEMPTIVE})
+            for (cv::essential::EssentialEngine engine :
+                 {cv::essential::ENGINE_ADAPTIVE, cv::essential::ENGINE_PREEMPTIVE})
                 for (double T : budgets) {
                     cv::essential::EssentialParams params;
                     params.engine = engine;
                     params.timeBudgetMs = T;
                     // Let the budget, not the confidence or the cap, end the search.
                     params.confidence = 1.0 - 1e-12;
-                    params.maxIters = 100000000;
+                    params.maxIterations = 100000000;
                     const Outcome o = runAll(scenes, params, criterion);
                     const double p95 = percentile(o.ms, 0.95);
                     std::printf(
@@ -266,7 +267,7 @@ int main(int argc, char** argv)
                 std::vector<essential_test::SyntheticScene> sorted;
                 for (int p = 0; p < problems; ++p)
                     sorted.push_back(sortedByQuality(scenes[p], noisy, 777 + p));
-                for (int sampler : {cv::SAMPLING_UNIFORM, cv::SAMPLING_PROSAC}) {
+                for (cv::SamplingMethod sampler : {cv::SAMPLING_UNIFORM, cv::SAMPLING_PROSAC}) {
                     cv::essential::EssentialParams params;
                     params.sampler = sampler;
                     const Outcome o = runAll(sorted, params, criterion);

@@ -115,7 +115,7 @@ void applyOption(const std::string& key, const std::string& value,
         }
         params.solver = value;
     } else if (key == "sampler") {
-        static const std::map<std::string, int> samplers = {
+        static const std::map<std::string, cv::SamplingMethod> samplers = {
             {"uniform", cv::SAMPLING_UNIFORM},
             {"prosac", cv::SAMPLING_PROSAC},
             {"napsac", cv::SAMPLING_NAPSAC},
@@ -126,7 +126,7 @@ void applyOption(const std::string& key, const std::string& value,
     } else if (key == "maxIters") {
         if (!parseInt(value, integer) || integer < 1 || integer > 100000000)
             fail(where + "maxIters is a positive integer", 2);
-        params.maxIters = static_cast<int>(integer);
+        params.maxIterations = static_cast<int>(integer);
     } else if (key == "lo") {
         if (!parseInt(value, integer) || integer < 0 || integer > 1000)
             fail(where + "lo (IRLS iterations of local optimisation) is an integer >= 0", 2);
@@ -582,7 +582,7 @@ Outcome runMethod(const Method& m, const Problem& p, const std::vector<cv::Point
             // sign of t is decided by every point in front).
             cv::Mat Rm, tm, poseMask = mask.clone();
             try {
-                cv::essential::recoverPose(E, p1, p2, K, Rm, tm, poseMask);
+                cv::essential::recoverPoseIter(E, p1, p2, K, Rm, tm, poseMask);
                 R = cv::Matx33d(Rm);
                 t = cv::Vec3d(tm);
                 out.posed = true;

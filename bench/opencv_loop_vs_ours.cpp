@@ -93,7 +93,8 @@ Outcome run(const essential_test::SyntheticScene& s, const cv::essential::Essent
     cv::Mat mask, R, t;
     const auto t0 = std::chrono::steady_clock::now();
     const cv::Mat E = cv::essential::findEssentialMatIter(s.px1, s.px2, K, params, mask, &report);
-    const int inFront = E.empty() ? 0 : cv::essential::recoverPose(E, s.px1, s.px2, K, R, t, mask);
+    const int inFront =
+        E.empty() ? 0 : cv::essential::recoverPoseIter(E, s.px1, s.px2, K, R, t, mask);
     o.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     o.solverCalls = report.hypothesesGenerated;
     if (inFront > 0 && R.rows == 3 && t.rows == 3) {
@@ -106,7 +107,7 @@ Outcome run(const essential_test::SyntheticScene& s, const cv::essential::Essent
 struct Row
 {
     std::string loop, solver;
-    int engine;
+    cv::essential::EssentialEngine engine;
     std::vector<Outcome> outcomes;
 };
 
@@ -141,7 +142,8 @@ int main(int argc, char** argv)
             for (Row& row : rows) {
                 cv::essential::EssentialParams params;
                 params.solver = row.solver;
-                params.method = args.method;
+                params.score =
+                    args.method == cv::LMEDS ? cv::SCORE_METHOD_LMEDS : cv::SCORE_METHOD_MSAC;
                 params.engine = row.engine;
                 row.outcomes.push_back(run(s, params));
             }

@@ -276,7 +276,7 @@ Outcome estimate(const essential_test::SyntheticScene& s, const Method& m, int b
             params.preemptiveBlockSize = block;
         } else {
             params.confidence = kAdaptiveProb;
-            params.maxIters = knob;
+            params.maxIterations = knob;
         }
         cv::essential::EssentialReport report;
         const cv::Mat Em =

@@ -33,7 +33,7 @@ bool right(const cv::Matx33d& E, const essential_test::HardScene& s)
             b.push_back(s.x2[i]);
         }
     cv::Mat R, t;
-    cv::essential::recoverPose(cv::Mat(E), a, b, cv::Mat::eye(3, 3, CV_64F), R, t);
+    cv::essential::recoverPoseIter(cv::Mat(E), a, b, cv::Mat::eye(3, 3, CV_64F), R, t);
     return essential_test::rotationErrorDeg(cv::Matx33d(R), s.R) < 5.0 &&
            essential_test::translationErrorDeg(cv::Vec3d(t), s.t) < 10.0;
 }

@@ -5,7 +5,7 @@
 // bench/compare_poselib_real.cpp), on the same pixel correspondences and camera, each timed by the
 // thread's CPU clock:
 //  - ours: cv::essential::findEssentialMatIter(points, K, RANSAC, 0.999, threshold, maxIters, mask)
-//    then cv::essential::recoverPose(E, points, K, R, t, mask) (the drop-in pair);
+//    then cv::essential::recoverPoseIter(E, points, K, R, t, mask) (the drop-in pair);
 //  - PoseLib: poselib::estimate_relative_pose with a pinhole camera, RANSAC min_iterations 0,
 //    max_iterations as given, max_error = threshold (px), all else PoseLib's defaults (success
 //    probability 0.9999, 3 times the dynamic trial count, LO by 25 LM iterations with a truncated
@@ -45,7 +45,7 @@ PoseEstimate runOurs(const std::vector<Point>& px1, const std::vector<Point>& px
                                                           threshold, maxIters, mask);
     int inFront = 0;
     if (E.rows == 3 && E.cols == 3)
-        inFront = cv::essential::recoverPose(E, px1, px2, Km, R, t, mask);
+        inFront = cv::essential::recoverPoseIter(E, px1, px2, Km, R, t, mask);
     e.ms = threadCpuMs() - t0;
     if (inFront > 0) {
         e.ok = true;

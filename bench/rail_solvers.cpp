@@ -130,13 +130,13 @@ int main(int argc, char** argv)
                     for (int r = 0; r < repeats; ++r) {
                         cv::essential::EssentialParams params;
                         params.solver = solver;
-                        params.maxIters = maxIters;
+                        params.maxIterations = maxIters;
                         params.seed = 1000 + r;
                         if (budgetMs > 0) {
                             // The budget, not the confidence or the cap, ends the search.
                             params.timeBudgetMs = budgetMs;
                             params.confidence = 1.0 - 1e-12;
-                            params.maxIters = 100000000;
+                            params.maxIterations = 100000000;
                         }
                         cv::essential::EssentialReport report;
                         const auto t0 = std::chrono::steady_clock::now();

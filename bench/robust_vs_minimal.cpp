@@ -41,7 +41,7 @@ Run estimate(const essential_test::SyntheticScene& s, const std::string& solver,
     cv::essential::EssentialParams params;
     params.solver = solver;
     params.confidence = 1.0 - 1e-12;
-    params.maxIters = std::max(1, maxIters);
+    params.maxIterations = std::max(1, maxIters);
     cv::essential::EssentialReport report;
     const auto t0 = std::chrono::steady_clock::now();
     cv::Mat E = cv::essential::findEssentialMatIter(s.px1, s.px2, cv::Mat(s.K), params,

@@ -13,6 +13,7 @@
 
 #include <opencv2/calib3d.hpp>
 #include <opencv2/core.hpp>
+#include <opencv2/essential/params.hpp>
 
 #include <cmath>
 #include <cstring>
@@ -152,6 +153,28 @@ inline int makeMethod(FuzzInput& in)
                                   12345,
                                   1};
     return in.pick(8) == 0 ? methods[in.pick(12)] : methods[in.pick(9)];
+}
+
+/** Stores any int in an enum field, values outside the enumeration included (a caller can make
+those by a cast, and the library must reject them). The bytes are copied: converting an out-of-range
+value to the enum type is undefined behaviour, which UBSan would report in the harness itself. */
+template <typename Enum> void setEnumBits(Enum& field, int value)
+{
+    static_assert(sizeof(Enum) == sizeof(int), "int-sized enums only");
+    std::memcpy(&field, &value, sizeof value);
+}
+
+/** EssentialParams::score: the two the module implements, often; the two it refuses
+(SCORE_METHOD_RANSAC, SCORE_METHOD_MAGSAC) and values outside ScoreMethod, sometimes. */
+inline void setScore(FuzzInput& in, cv::essential::EssentialParams& params, int rareOdds)
+{
+    static const int scores[] = {cv::SCORE_METHOD_MSAC,
+                                 cv::SCORE_METHOD_LMEDS,
+                                 cv::SCORE_METHOD_RANSAC,
+                                 cv::SCORE_METHOD_MAGSAC,
+                                 -1,
+                                 17};
+    setEnumBits(params.score, in.pick(rareOdds) == 0 ? scores[in.pick(6)] : scores[in.pick(2)]);
 }
 
 inline double makeProb(FuzzInput& in)

@@ -104,8 +104,8 @@ void runOne(FuzzInput& in)
         static const char* solvers[] = {"gn",        "lm",      "nister", "robust", "gn+nister",
                                         "gn:3+lm:1", "no_such", "",       "gn+",    "gn:0"};
         params.solver = in.pick(4) == 0 ? solvers[in.pick(10)] : solvers[in.pick(6)];
-        params.method = in.pick(6) == 0 ? makeMethod(in) : (in.pick(2) ? cv::RANSAC : cv::LMEDS);
-        params.engine = in.pick(16) == 0 ? in.pick(5) - 1 : in.pick(3);
+        setScore(in, params, 6);
+        setEnumBits(params.engine, in.pick(16) == 0 ? in.pick(5) - 1 : in.pick(3));
         params.timeBudgetMs = in.pick(5) == 0 ? in.anyDouble() : 0.0;
         // A budget is honoured to the end on data without geometry; keep each run short.
         if (params.timeBudgetMs > 2) params.timeBudgetMs = 2;
@@ -113,15 +113,15 @@ void runOne(FuzzInput& in)
         params.preemptiveBlockSize = in.pick(16) == 0 ? in.pick(120) - 2 : 1 + in.pick(120);
         params.confidence = makeProb(in);
         params.threshold = makeThreshold(in);
-        params.maxIters = makeMaxIters(in, kIterationCap);
+        params.maxIterations = makeMaxIters(in, kIterationCap);
         params.loIterations = in.pick(16) == 0 ? in.pick(8) - 1 : in.pick(8);
         params.loSampleSize =
             in.pick(8) == 0 ? in.pick(12) - 1 : (in.pick(2) ? 0 : 5 + in.pick(20));
         static const int samplers[] = {cv::SAMPLING_PROSAC, cv::SAMPLING_NAPSAC,
                                        cv::SAMPLING_PROGRESSIVE_NAPSAC};
-        params.sampler =
-            in.pick(16) == 0 ? in.pick(6) - 1 : (in.pick(4) ? 0 : samplers[in.pick(3)]);
-        params.sampleBudget = in.pick(16) == 0 ? in.pick(4) - 1 : in.pick(2);
+        setEnumBits(params.sampler,
+                    in.pick(16) == 0 ? in.pick(6) - 1 : (in.pick(4) ? 0 : samplers[in.pick(3)]));
+        setEnumBits(params.sampleBudget, in.pick(16) == 0 ? in.pick(4) - 1 : in.pick(2));
         params.planeParallax = in.pick(2) != 0;
         params.budgetLocalSamples = in.pick(2) != 0;
         params.sprt = in.pick(2) != 0;
@@ -163,19 +163,19 @@ void runOne(FuzzInput& in)
         if (api == 7) {
             const cv::Mat K = makeCamera(in);
             if (in.pick(2) == 0) {
-                inFront = ess::recoverPose(E, p1, p2, K, R, t, poseMask);
+                inFront = ess::recoverPoseIter(E, p1, p2, K, R, t, poseMask);
             } else {
                 static const double thresholds[] = {50.0, 1.0, 1e300,
                                                     std::numeric_limits<double>::infinity()};
                 const double d = in.pick(4) == 0 ? in.anyDouble() : thresholds[in.pick(4)];
                 cv::Mat X;
-                inFront = ess::recoverPose(E, p1, p2, K, R, t, d, poseMask, X);
+                inFront = ess::recoverPoseIter(E, p1, p2, K, R, t, d, poseMask, X);
                 checkTriangulated(X, std::max(n, 0), inFront, t);
             }
         } else {
             const double focal = in.pick(3) == 0 ? in.anyDouble() : 50.0 + in.pick(1000);
-            inFront =
-                ess::recoverPose(E, p1, p2, R, t, focal, cv::Point2d(in.pick(640), 240), poseMask);
+            inFront = ess::recoverPoseIter(E, p1, p2, R, t, focal, cv::Point2d(in.pick(640), 240),
+                                           poseMask);
         }
         checkPose(inFront, R, t, n);
         break;

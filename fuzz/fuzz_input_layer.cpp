@@ -61,19 +61,19 @@ ess::EssentialParams tinyParams(FuzzInput& in)
     ess::EssentialParams params;
     static const char* solvers[] = {"gn", "lm", "nister", "robust", "gn+nister", "", "x+", "gn:0"};
     params.solver = solvers[in.pick(8)];
-    params.method = in.pick(4) == 0 ? makeMethod(in) : (in.pick(2) ? cv::RANSAC : cv::LMEDS);
-    params.engine = in.pick(8) == 0 ? in.pick(5) - 1 : in.pick(3);
+    setScore(in, params, 4);
+    setEnumBits(params.engine, in.pick(8) == 0 ? in.pick(5) - 1 : in.pick(3));
     params.timeBudgetMs = in.pick(4) == 0 ? in.anyDouble() : 0.0;
     if (params.timeBudgetMs > 0.2) params.timeBudgetMs = 0.2;
     params.preemptiveHypotheses = in.pick(12) - 2;
     params.preemptiveBlockSize = in.pick(12) - 2;
     params.confidence = makeProb(in);
     params.threshold = makeThreshold(in);
-    params.maxIters = makeMaxIters(in, 4);
+    params.maxIterations = makeMaxIters(in, 4);
     params.loIterations = in.pick(5) - 1;
     params.loSampleSize = in.pick(14) - 1;
-    params.sampler = in.pick(4) == 0 ? in.pick(6) - 1 : 0;
-    params.sampleBudget = in.pick(4) - 1;
+    setEnumBits(params.sampler, in.pick(4) == 0 ? in.pick(6) - 1 : 0);
+    setEnumBits(params.sampleBudget, in.pick(4) - 1);
     params.distance = static_cast<ess::EssentialDistance>(in.pick(2));
     params.planeParallax = in.pick(2) != 0;
     params.budgetLocalSamples = in.pick(2) != 0;
@@ -176,15 +176,15 @@ void runOne(FuzzInput& in)
         cv::Mat R, t;
         int inFront = 0;
         if (api == 7) {
-            inFront = ess::recoverPose(E, p1, p2, camera(in), R, t, mask);
+            inFront = ess::recoverPoseIter(E, p1, p2, camera(in), R, t, mask);
         } else if (api == 8) {
             const double focal = in.pick(2) ? in.anyDouble() : 50.0 + in.pick(1000);
-            inFront = ess::recoverPose(E, p1, p2, R, t, focal,
-                                       cv::Point2d(in.anyDouble(), in.anyDouble()), mask);
+            inFront = ess::recoverPoseIter(E, p1, p2, R, t, focal,
+                                           cv::Point2d(in.anyDouble(), in.anyDouble()), mask);
         } else {
             cv::Mat X;
             const double d = in.pick(2) ? in.anyDouble() : 50.0;
-            inFront = ess::recoverPose(E, p1, p2, camera(in), R, t, d, mask, X);
+            inFront = ess::recoverPoseIter(E, p1, p2, camera(in), R, t, d, mask, X);
             checkTriangulated(X, p1.checkVector(2), inFront, t);
         }
         checkPose(inFront, R, t, p1.checkVector(2));
@@ -198,7 +198,7 @@ void runOne(FuzzInput& in)
         const int method = makeMethod(in);
         const double prob = makeProb(in), thr = makeThreshold(in);
         const int inFront =
-            ess::recoverPose(q1, q2, K1, d1, K2, d2, E, R, t, method, prob, thr, mask);
+            ess::recoverPoseIter(q1, q2, K1, d1, K2, d2, E, R, t, method, prob, thr, mask);
         if (!E.empty() && (E.rows != 3 || E.cols != 3 || E.type() != CV_64F || !cv::checkRange(E)))
             broken("E of the two-camera recoverPose");
         checkPose(inFront, R, t, static_cast<int>(q1.total()) * q1.channels());

@@ -155,7 +155,7 @@ template <bool Ours> void BM_RecoverPose(benchmark::State& state)
     cv::Mat R, t, mask;
     for (auto _ : state) {
         mask0.copyTo(mask);
-        const int inFront = Ours ? cv::essential::recoverPose(E, s.px1, s.px2, K, R, t, mask)
+        const int inFront = Ours ? cv::essential::recoverPoseIter(E, s.px1, s.px2, K, R, t, mask)
                                  : cv::recoverPose(E, s.px1, s.px2, K, R, t, mask);
         benchmark::DoNotOptimize(inFront);
     }

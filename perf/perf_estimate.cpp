@@ -96,13 +96,13 @@ Estimator essentialDropIn()
         const cv::Mat E = cv::essential::findEssentialMatIter(s.px1, s.px2, K, cv::RANSAC, 0.999,
                                                               1.0, 1000, mask);
         if (E.empty()) return false;
-        cv::essential::recoverPose(E, s.px1, s.px2, K, Rm, tm, mask);
+        cv::essential::recoverPoseIter(E, s.px1, s.px2, K, Rm, tm, mask);
         return poseFromMats(Rm, tm, R, t);
     };
 }
 
 /** The EssentialParams overload with a solver and an engine; pose from the same recoverPose. */
-Estimator essentialWith(const std::string& solver, int engine)
+Estimator essentialWith(const std::string& solver, cv::essential::EssentialEngine engine)
 {
     return [solver, engine](const essential_test::SyntheticScene& s, cv::Matx33d& R, cv::Vec3d& t) {
         cv::Mat mask, Rm, tm;
@@ -112,7 +112,7 @@ Estimator essentialWith(const std::string& solver, int engine)
         params.engine = engine;
         const cv::Mat E = cv::essential::findEssentialMatIter(s.px1, s.px2, K, params, mask);
         if (E.empty()) return false;
-        cv::essential::recoverPose(E, s.px1, s.px2, K, Rm, tm, mask);
+        cv::essential::recoverPoseIter(E, s.px1, s.px2, K, Rm, tm, mask);
         return poseFromMats(Rm, tm, R, t);
     };
 }
@@ -196,7 +196,7 @@ void registerAll()
 
     // Solver x engine, the module's own overload (not part of the targets table).
     const std::vector<std::string> solvers = {"gn", "nister", "gn+nister"};
-    const std::vector<std::pair<std::string, int>> engines = {
+    const std::vector<std::pair<std::string, cv::essential::EssentialEngine>> engines = {
         {"adaptive", cv::essential::ENGINE_ADAPTIVE},
         {"preemptive", cv::essential::ENGINE_PREEMPTIVE}};
     for (int ratio : {50, 30})

@@ -18,7 +18,7 @@ BUDGET_OPENCV_TIME: int
 
 class EssentialParams:
     solver: str
-    method: int
+    score: int
     engine: int
     timeBudgetMs: float
     preemptiveHypotheses: int
@@ -26,7 +26,7 @@ class EssentialParams:
     confidence: float
     threshold: float
     distance: int
-    maxIters: int
+    maxIterations: int
     sampleBudget: int
     budgetLocalSamples: bool
     planeParallax: bool
@@ -117,6 +117,9 @@ def recoverPose(E: ArrayLike, points1: ArrayLike, points2: ArrayLike, cameraMatr
 def recoverPose(E: ArrayLike, points1: ArrayLike, points2: ArrayLike, R: ArrayLike = ..., t: ArrayLike = ...,
                 focal: float = ..., pp: Tuple[float, float] = ...,
                 mask: ArrayLike = ...) -> Tuple[int, Array, Array, Optional[Array]]: ...
+
+# The C++ API's name (cv::essential::recoverPoseIter); the same function.
+recoverPoseIter = recoverPose
 
 def listSolvers() -> List[str]: ...
 def isOpenCvLoopAvailable() -> bool: ...

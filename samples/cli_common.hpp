@@ -173,7 +173,7 @@ inline std::vector<std::vector<double>> readNumberRows(std::istream& in,
 
 /** "uniform", "prosac", "napsac" or "pnapsac" as the cv::SamplingMethod the module takes in
 EssentialParams::sampler; false (value unchanged) for anything else. */
-inline bool parseSampler(const std::string& name, int& sampler)
+inline bool parseSampler(const std::string& name, cv::SamplingMethod& sampler)
 {
     if (name == "uniform")
         sampler = cv::SAMPLING_UNIFORM;

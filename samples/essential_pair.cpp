@@ -163,7 +163,7 @@ struct Options
     double threshold = cv::essential::EssentialParams().threshold;
     std::uint64_t seed = cv::essential::EssentialParams().seed;
     double keep = essential_samples::FrontEndParams().keepFraction;
-    int maxIters = cv::essential::EssentialParams().maxIters;
+    int maxIters = cv::essential::EssentialParams().maxIterations;
     bool maxItersGiven = false;
     double budgetMs = 0;
     essential_samples::Descriptor descriptor = essential_samples::FrontEndParams().descriptor;
@@ -171,7 +171,7 @@ struct Options
     descriptor order is an option, not the default: on the front end's best 20% of the rail
     matches it took twice the time and got one pose of 54 wrong where uniform got none
     (docs/HARD_PAIRS.md). */
-    int sampler = cv::SAMPLING_UNIFORM;
+    cv::SamplingMethod sampler = cv::SAMPLING_UNIFORM;
     bool json = false;
     std::string draw;
 };
@@ -441,12 +441,12 @@ int run(int argc, char** argv)
     params.solver = options.solver;
     params.threshold = options.threshold;
     params.seed = options.seed;
-    params.maxIters = options.maxIters;
+    params.maxIterations = options.maxIters;
     if (options.budgetMs > 0) {
         // The budget, not the confidence or (unless given) the cap, ends the search.
         params.timeBudgetMs = options.budgetMs;
         params.confidence = 1.0 - 1e-12;
-        if (!options.maxItersGiven) params.maxIters = 100000000;
+        if (!options.maxItersGiven) params.maxIterations = 100000000;
     }
     params.sampler = options.sampler;
     cv::essential::EssentialReport report;
@@ -543,7 +543,7 @@ int run(int argc, char** argv)
                                {"sampler", essential_samples::samplerName(params.sampler)},
                                {"threshold_px", params.threshold},
                                {"seed", params.seed},
-                               {"max_iters", params.maxIters},
+                               {"max_iters", params.maxIterations},
                                {"confidence", params.confidence},
                                {"budget_ms", options.budgetMs},
                                {"stopping", budgetNote},

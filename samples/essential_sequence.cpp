@@ -115,14 +115,14 @@ struct Options
     std::vector<double> budgets = {0.0};
     /** The module's default (uniform, with local samples past the confidence cap); PROSAC on the
     descriptor order is an option (docs/HARD_PAIRS.md: slower, and once wrong, on the best 20%). */
-    int sampler = cv::SAMPLING_UNIFORM;
+    cv::SamplingMethod sampler = cv::SAMPLING_UNIFORM;
     double thresholdDeg = 10.0;
     int framesStep = 1;
     std::string csv;
     bool opencv = false;
     essential_samples::Descriptor descriptor = essential_samples::FrontEndParams().descriptor;
     double threshold = cv::essential::EssentialParams().threshold;
-    int maxIters = cv::essential::EssentialParams().maxIters;
+    int maxIters = cv::essential::EssentialParams().maxIterations;
     std::uint64_t seed = cv::essential::EssentialParams().seed;
 };
 
@@ -444,14 +444,14 @@ int run(int argc, char** argv)
                 cv::essential::EssentialParams params;
                 params.solver = row.solver;
                 params.threshold = options.threshold;
-                params.maxIters = options.maxIters;
+                params.maxIterations = options.maxIters;
                 params.seed = options.seed;
                 params.sampler = options.sampler;
                 if (row.budget > 0) {
                     // The budget, not the confidence or the cap, ends the search.
                     params.timeBudgetMs = row.budget;
                     params.confidence = 1.0 - 1e-12;
-                    params.maxIters = 100000000;
+                    params.maxIterations = 100000000;
                 }
                 cv::essential::EssentialReport report;
                 start = std::chrono::steady_clock::now();

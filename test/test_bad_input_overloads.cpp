@@ -126,13 +126,14 @@ const std::vector<Overload>& overloads()
              return ess::findEssentialMatIter(a.p1, a.p2, a.K1, a.K2, a.d1, a.d2, mask, usac);
          }},
         {"findEssentialMatIter(K, EssentialParams, mask, report)",
-         kCameraMatrix | kMethod | kProb | kMaxIters | kEstimates | kNeedsFivePoints | kUsacReading,
+         kCameraMatrix | kProb | kMaxIters | kEstimates | kNeedsFivePoints | kUsacReading,
          [](const Args& a, cv::Mat& mask) {
              ess::EssentialParams params;
-             params.method = a.method;
+             // The params form has a score, not a method flag (its bad values: the Option table).
+             params.score = a.method == cv::LMEDS ? cv::SCORE_METHOD_LMEDS : cv::SCORE_METHOD_MSAC;
              params.confidence = a.prob;
              params.threshold = a.threshold;
-             params.maxIters = a.maxIters;
+             params.maxIterations = a.maxIters;
              ess::EssentialReport report;
              cv::Mat E = ess::findEssentialMatIter(a.p1, a.p2, a.K1, params, mask, &report);
              EXPECT_EQ(report.success, !E.empty());
@@ -141,7 +142,7 @@ const std::vector<Overload>& overloads()
         {"recoverPose(E, K, R, t, mask)", kCameraMatrix,
          [](const Args& a, cv::Mat& mask) {
              cv::Mat R, t;
-             const int n = ess::recoverPose(a.E, a.p1, a.p2, a.K1, R, t, mask);
+             const int n = ess::recoverPoseIter(a.E, a.p1, a.p2, a.K1, R, t, mask);
              EXPECT_GE(n, 0);
              EXPECT_EQ(R.size(), cv::Size(3, 3));
              EXPECT_EQ(t.size(), cv::Size(1, 3));
@@ -150,7 +151,7 @@ const std::vector<Overload>& overloads()
         {"recoverPose(E, R, t, focal, pp, mask)", kFocal,
          [](const Args& a, cv::Mat& mask) {
              cv::Mat R, t;
-             const int n = ess::recoverPose(a.E, a.p1, a.p2, R, t, a.focal, a.pp, mask);
+             const int n = ess::recoverPoseIter(a.E, a.p1, a.p2, R, t, a.focal, a.pp, mask);
              EXPECT_GE(n, 0);
              EXPECT_EQ(R.size(), cv::Size(3, 3));
              EXPECT_EQ(t.size(), cv::Size(1, 3));
@@ -159,7 +160,7 @@ const std::vector<Overload>& overloads()
         {"recoverPose(E, K, R, t, distanceThresh, mask, triangulatedPoints)", kCameraMatrix,
          [](const Args& a, cv::Mat& mask) {
              cv::Mat R, t, X;
-             const int n = ess::recoverPose(a.E, a.p1, a.p2, a.K1, R, t, 50.0, mask, X);
+             const int n = ess::recoverPoseIter(a.E, a.p1, a.p2, a.K1, R, t, 50.0, mask, X);
              EXPECT_GE(n, 0);
              EXPECT_EQ(R.size(), cv::Size(3, 3));
              EXPECT_EQ(t.size(), cv::Size(1, 3));
@@ -171,8 +172,8 @@ const std::vector<Overload>& overloads()
              kUndistorts,
          [](const Args& a, cv::Mat& mask) {
              cv::Mat E, R, t;
-             const int n = ess::recoverPose(a.p1, a.p2, a.K1, a.d1, a.K2, a.d2, E, R, t, a.method,
-                                            a.prob, a.threshold, mask);
+             const int n = ess::recoverPoseIter(a.p1, a.p2, a.K1, a.d1, a.K2, a.d2, E, R, t,
+                                                a.method, a.prob, a.threshold, mask);
              EXPECT_GE(n, 0);
              EXPECT_EQ(R.size(), cv::Size(3, 3));
              EXPECT_EQ(t.size(), cv::Size(1, 3));
@@ -608,7 +609,9 @@ TEST(BadInputTable, MaxItersNotPositive)
         SCOPED_TRACE(maxIters);
         Args a;
         a.maxIters = maxIters;
-        expectThrowsOnAll(kMaxIters, a, {"maxIters"}, 4);
+        // "maxIters" in the drop-in forms, "...::maxIterations" in the UsacParams and
+        // EssentialParams forms.
+        expectThrowsOnAll(kMaxIters, a, {"maxIter"}, 4);
     }
 }
 
@@ -631,7 +634,7 @@ TEST(BadInputTable, UnknownMethod)
         SCOPED_TRACE(method);
         Args a;
         a.method = method;
-        expectThrowsOnAll(kMethod, a, {"method", std::to_string(method)}, 7);
+        expectThrowsOnAll(kMethod, a, {"method", std::to_string(method)}, 6);
     }
 }
 
@@ -660,15 +663,26 @@ TEST(BadInputTable, UnknownSolverEngineSamplerOrOption)
         std::string needle;
     };
     const std::vector<Option> options = {
-        {[](ess::EssentialParams& p) { p.engine = 7; }, "engine"},
-        {[](ess::EssentialParams& p) { p.engine = -1; }, "engine"},
-        {[](ess::EssentialParams& p) { p.sampler = 99; }, "sampler"},
+        // Values outside an enumeration, which a caller can make only by a cast.
+        {[](ess::EssentialParams& p) { p.engine = static_cast<ess::EssentialEngine>(7); },
+         "engine"},
+        {[](ess::EssentialParams& p) { p.engine = static_cast<ess::EssentialEngine>(-1); },
+         "engine"},
+        {[](ess::EssentialParams& p) { p.sampler = static_cast<cv::SamplingMethod>(99); },
+         "sampler"},
+        {[](ess::EssentialParams& p) { p.score = static_cast<cv::ScoreMethod>(99); }, "score"},
+        // Settings the module does not implement: StsNotImplemented naming them.
+        {[](ess::EssentialParams& p) { p.score = cv::SCORE_METHOD_RANSAC; }, "SCORE_METHOD_RANSAC"},
+        {[](ess::EssentialParams& p) { p.score = cv::SCORE_METHOD_MAGSAC; }, "SCORE_METHOD_MAGSAC"},
         {[](ess::EssentialParams& p) {
              p.sampler = cv::SAMPLING_NAPSAC;
-             p.method = cv::LMEDS;
+             p.score = cv::SCORE_METHOD_LMEDS;
          },
          "SAMPLING_NAPSAC"},
-        {[](ess::EssentialParams& p) { p.sampleBudget = 2; }, "sampleBudget"},
+        {[](ess::EssentialParams& p) {
+             p.sampleBudget = static_cast<ess::EssentialSampleBudget>(2);
+         },
+         "sampleBudget"},
         {[](ess::EssentialParams& p) { p.loIterations = -1; }, "loIterations"},
         {[](ess::EssentialParams& p) { p.loSampleSize = 3; }, "loSampleSize"},
         {[](ess::EssentialParams& p) { p.preemptiveBlockSize = 0; }, "preemptiveBlockSize"},
@@ -677,7 +691,7 @@ TEST(BadInputTable, UnknownSolverEngineSamplerOrOption)
         {[](ess::EssentialParams& p) { p.timeBudgetMs = kNaN; }, "timeBudgetMs"},
         {[](ess::EssentialParams& p) {
              p.engine = ess::ENGINE_PREEMPTIVE;
-             p.method = cv::LMEDS;
+             p.score = cv::SCORE_METHOD_LMEDS;
          },
          "ENGINE_PREEMPTIVE"},
     };
@@ -696,11 +710,6 @@ TEST(BadInputTable, UnknownSolverEngineSamplerOrOption)
     const std::vector<UsacOption> usacOptions = {
         {[](cv::UsacParams& u) { u.score = static_cast<cv::ScoreMethod>(99); }, "score"},
         {[](cv::UsacParams& u) { u.sampler = static_cast<cv::SamplingMethod>(99); }, "sampler"},
-        {[](cv::UsacParams& u) {
-             u.sampler = cv::SAMPLING_PROGRESSIVE_NAPSAC;
-             u.score = cv::SCORE_METHOD_LMEDS;
-         },
-         "sampler"},
         {[](cv::UsacParams& u) { u.loMethod = static_cast<cv::LocalOptimMethod>(99); }, "loMethod"},
         {[](cv::UsacParams& u) { u.loIterations = -2; }, "loIterations"},
         {[](cv::UsacParams& u) { u.loSampleSize = 4; }, "loSampleSize"},
@@ -734,15 +743,15 @@ TEST(BadInputTable, RecoverPoseEssentialMatrixAndMask)
         const cv::Mat& E = item.first; // not a structured binding: lambdas capture it
         const std::string& needle = item.second;
         SCOPED_TRACE(needle);
-        expectThrowsWith([&] { ess::recoverPose(E, scene().px1, scene().px2, K, R, t); },
+        expectThrowsWith([&] { ess::recoverPoseIter(E, scene().px1, scene().px2, K, R, t); },
                          {"E", needle});
-        expectThrowsWith([&] { ess::recoverPose(E, scene().px1, scene().px2, R, t, 500.0); },
+        expectThrowsWith([&] { ess::recoverPoseIter(E, scene().px1, scene().px2, R, t, 500.0); },
                          {"E", needle});
     }
     // The zero matrix cannot be decomposed: no pose (R = I, t = 0), no point in front.
     cv::Mat mask;
     const int n =
-        ess::recoverPose(cv::Mat::zeros(3, 3, CV_64F), scene().px1, scene().px2, K, R, t, mask);
+        ess::recoverPoseIter(cv::Mat::zeros(3, 3, CV_64F), scene().px1, scene().px2, K, R, t, mask);
     EXPECT_EQ(n, 0);
     EXPECT_EQ(cv::norm(R, cv::Mat::eye(3, 3, CV_64F)), 0.0);
     EXPECT_EQ(cv::norm(t), 0.0);
@@ -751,17 +760,21 @@ TEST(BadInputTable, RecoverPoseEssentialMatrixAndMask)
     for (const double d : {0.0, -1.0, kNaN, -kInf}) {
         SCOPED_TRACE(d);
         expectThrowsWith(
-            [&] { ess::recoverPose(cv::Mat(scene().E), scene().px1, scene().px2, K, R, t, d); },
+            [&] { ess::recoverPoseIter(cv::Mat(scene().E), scene().px1, scene().px2, K, R, t, d); },
             {"distanceThresh"});
     }
     // A mask of the wrong size or type.
     cv::Mat shortMask(10, 1, CV_8U, cv::Scalar(1));
     expectThrowsWith(
-        [&] { ess::recoverPose(cv::Mat(scene().E), scene().px1, scene().px2, K, R, t, shortMask); },
+        [&] {
+            ess::recoverPoseIter(cv::Mat(scene().E), scene().px1, scene().px2, K, R, t, shortMask);
+        },
         {"mask", "one entry per point"});
     cv::Mat floatMask(static_cast<int>(scene().px1.size()), 1, CV_32F, cv::Scalar(1));
     expectThrowsWith(
-        [&] { ess::recoverPose(cv::Mat(scene().E), scene().px1, scene().px2, K, R, t, floatMask); },
+        [&] {
+            ess::recoverPoseIter(cv::Mat(scene().E), scene().px1, scene().px2, K, R, t, floatMask);
+        },
         {"mask", "CV_8U"});
 }
 
@@ -815,11 +828,11 @@ std::vector<ess::EssentialParams> engineVariants(const std::string& solver)
     std::vector<ess::EssentialParams> v;
     ess::EssentialParams p;
     p.solver = solver;
-    p.maxIters = 200;
+    p.maxIterations = 200;
     v.push_back(p); // adaptive MSAC
-    p.method = cv::LMEDS;
+    p.score = cv::SCORE_METHOD_LMEDS;
     v.push_back(p);
-    p.method = cv::RANSAC;
+    p.score = cv::SCORE_METHOD_MSAC;
     p.engine = ess::ENGINE_PREEMPTIVE;
     p.preemptiveHypotheses = 50;
     v.push_back(p);
@@ -848,8 +861,8 @@ TEST(BadInputTable, UserSolverThatThrows)
     };
     for (const auto& [name, needles] : cases) {
         for (const ess::EssentialParams& p : engineVariants(name)) {
-            SCOPED_TRACE(name + " engine " + std::to_string(p.engine) + " method " +
-                         std::to_string(p.method));
+            SCOPED_TRACE(name + " engine " + std::to_string(p.engine) + " score " +
+                         std::to_string(p.score));
             cv::Mat mask;
             expectThrowsWith(
                 [&] { ess::findEssentialMatIter(scene().px1, scene().px2, K, p, mask); }, needles);
@@ -867,8 +880,8 @@ TEST(BadInputTable, UserSolverThatReturnsGarbage)
     for (int kind = 0; kind < 5; ++kind) {
         const std::string name = "badinput_garbage_" + std::to_string(kind);
         for (const ess::EssentialParams& p : engineVariants(name)) {
-            SCOPED_TRACE(name + " engine " + std::to_string(p.engine) + " method " +
-                         std::to_string(p.method));
+            SCOPED_TRACE(name + " engine " + std::to_string(p.engine) + " score " +
+                         std::to_string(p.score));
             cv::Mat mask;
             ess::EssentialReport report;
             const cv::Mat E =

@@ -67,7 +67,7 @@ TEST(EndToEnd, DropInDefaultsRecoverThePose)
         }
         cv::Mat R, t;
         cv::Mat inFront = mask.clone();
-        const int n = cv::essential::recoverPose(E, s.px1, s.px2, cv::Mat(s.K), R, t, inFront);
+        const int n = cv::essential::recoverPoseIter(E, s.px1, s.px2, cv::Mat(s.K), R, t, inFront);
         const double re = rotationErrorDeg(cv::Matx33d(R), s.R);
         const double te = translationErrorDeg(cv::Vec3d(t), s.t);
         rotErr.push_back(re);
@@ -149,7 +149,7 @@ TEST(EndToEnd, ReportIsConsistent)
         EXPECT_LT(rotationErrorDeg(report.R, s.R), 1.0);
         EXPECT_LT(translationErrorDeg(report.t, s.t), 3.0);
         cv::Mat R, t, inFront = mask.clone();
-        const int n = cv::essential::recoverPose(E, s.px1, s.px2, cv::Mat(s.K), R, t, inFront);
+        const int n = cv::essential::recoverPoseIter(E, s.px1, s.px2, cv::Mat(s.K), R, t, inFront);
         EXPECT_EQ(report.pointsInFront, n);
         EXPECT_LT(cv::norm(cv::Matx33d(R) - report.R, cv::NORM_INF), 1e-12);
         EXPECT_LT(cv::norm(cv::Vec3d(t) - report.t, cv::NORM_INF), 1e-12);
@@ -159,7 +159,7 @@ TEST(EndToEnd, ReportIsConsistent)
         // Counts.
         EXPECT_GT(report.iterations, 0);
         // maxIters is in OpenCV's units: up to maxIters / successRate samples (params.hpp).
-        EXPECT_LE(report.iterations, static_cast<int>(std::ceil(params.maxIters / gnSuccess)));
+        EXPECT_LE(report.iterations, static_cast<int>(std::ceil(params.maxIterations / gnSuccess)));
         EXPECT_GE(report.hypothesesGenerated, report.iterations);
         EXPECT_GT(report.hypothesesConverged, 0);
         EXPECT_GT(report.hypothesesScored, 0);

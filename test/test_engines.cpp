@@ -123,12 +123,12 @@ TEST(EngineParameters, InvalidSettingsRaise)
         }
     };
     cv::essential::EssentialParams p;
-    p.engine = 7;
+    p.engine = static_cast<cv::essential::EssentialEngine>(7); // only a cast can make one
     expectThrow(p, cv::Error::StsBadArg);
     p = cv::essential::EssentialParams();
     p.engine = cv::essential::ENGINE_PREEMPTIVE;
-    p.method = cv::LMEDS;
-    expectThrow(p, cv::Error::StsBadArg);
+    p.score = cv::SCORE_METHOD_LMEDS;
+    expectThrow(p, cv::Error::StsNotImplemented);
     p = cv::essential::EssentialParams();
     p.timeBudgetMs = -1;
     expectThrow(p, cv::Error::StsBadArg);

@@ -116,7 +116,7 @@ void poseOf(const cv::Matx33d& E, const essential_test::HardScene& s, cv::Matx33
             b.push_back(s.x2[i]);
         }
     cv::Mat Rm, tm;
-    cv::essential::recoverPose(cv::Mat(E), a, b, cv::Mat::eye(3, 3, CV_64F), Rm, tm);
+    cv::essential::recoverPoseIter(cv::Mat(E), a, b, cv::Mat::eye(3, 3, CV_64F), Rm, tm);
     R = cv::Matx33d(Rm);
     t = cv::Vec3d(tm);
 }

@@ -96,7 +96,7 @@ TEST(LmedsThreshold, PointsAsManyAsTheSampleSize)
     const SyntheticScene s = makeScene(cfg, 32);
     cv::essential::EssentialParams params;
     params.solver = "robust";
-    params.method = cv::LMEDS;
+    params.score = cv::SCORE_METHOD_LMEDS;
     cv::Mat mask;
     cv::essential::EssentialReport report;
     const cv::Mat E =

@@ -36,11 +36,12 @@ SyntheticScene scene(double inlierRatio, uint64_t seed)
     return makeScene(cfg, seed);
 }
 
-EssentialParams openCvEngine(const std::string& solver, int method = cv::RANSAC)
+EssentialParams openCvEngine(const std::string& solver,
+                             cv::ScoreMethod score = cv::SCORE_METHOD_MSAC)
 {
     EssentialParams p;
     p.solver = solver;
-    p.method = method;
+    p.score = score;
     p.engine = cv::essential::ENGINE_OPENCV;
     return p;
 }
@@ -113,7 +114,7 @@ TEST_P(OpenCvLoopSolvers, RansacRecoversThePose)
     for (int k = 0; k < kProblems; ++k) {
         const SyntheticScene s = scene(0.7, 100 + static_cast<uint64_t>(k));
         const Estimate e = estimate(s, params);
-        if (recoversPose(s, e, params.maxIters))
+        if (recoversPose(s, e, params.maxIterations))
             ++good;
         else
             failed += " " + std::to_string(100 + k);
@@ -124,14 +125,14 @@ TEST_P(OpenCvLoopSolvers, RansacRecoversThePose)
 TEST_P(OpenCvLoopSolvers, LmedsRecoversThePose)
 {
     // OpenCV's LMedS needs more than half inliers; its sample count assumes 45% outliers.
-    const EssentialParams params = openCvEngine(GetParam(), cv::LMEDS);
+    const EssentialParams params = openCvEngine(GetParam(), cv::SCORE_METHOD_LMEDS);
     REQUIRE_OPENCV_LOOP(scene(0.8, 1), params);
     int good = 0;
     std::string failed;
     for (int k = 0; k < kProblems; ++k) {
         const SyntheticScene s = scene(0.8, 200 + static_cast<uint64_t>(k));
         const Estimate e = estimate(s, params);
-        if (recoversPose(s, e, params.maxIters))
+        if (recoversPose(s, e, params.maxIterations))
             ++good;
         else
             failed += " " + std::to_string(200 + k);
@@ -178,7 +179,8 @@ TEST(OpenCvLoop, MaskMarksTheInliers)
 {
     for (int method : {cv::RANSAC, cv::LMEDS}) {
         SCOPED_TRACE(method == cv::LMEDS ? "LMEDS" : "RANSAC");
-        const EssentialParams params = openCvEngine("gn", method);
+        const EssentialParams params = openCvEngine(
+            "gn", method == cv::LMEDS ? cv::SCORE_METHOD_LMEDS : cv::SCORE_METHOD_MSAC);
         const SyntheticScene s = scene(method == cv::LMEDS ? 0.8 : 0.5, 7);
         REQUIRE_OPENCV_LOOP(s, params);
         const Estimate e = estimate(s, params);
@@ -262,7 +264,7 @@ TEST(OpenCvLoop, CustomSolverRunsInsideOpenCvsLoop)
     gCalls = 0;
     gForeignSamples = 0;
     const Estimate e = estimate(s, params);
-    EXPECT_TRUE(recoversPose(s, e, params.maxIters));
+    EXPECT_TRUE(recoversPose(s, e, params.maxIterations));
     EXPECT_GT(gCalls.load(), 0);
     EXPECT_EQ(gCalls.load(), e.report.hypothesesGenerated);
     EXPECT_EQ(gForeignSamples.load(), 0);
@@ -271,7 +273,7 @@ TEST(OpenCvLoop, CustomSolverRunsInsideOpenCvsLoop)
     // maxIters as given: exactly 40 solver calls (the module's own loop would draw up to
     // 40 / successRate() = 115 samples for gn).
     const SyntheticScene hard = scene(0.3, 22);
-    params.maxIters = 40;
+    params.maxIterations = 40;
     gCalls = 0;
     const Estimate capped = estimate(hard, params);
     EXPECT_EQ(gCalls.load(), 40);

@@ -46,7 +46,7 @@ std::vector<double> dropInErrors(double inlierRatio, int problems, int& reliable
         const cv::Mat E = cv::essential::findEssentialMatIter(s.px1, s.px2, K, cv::RANSAC, 0.999,
                                                               1.0, 1000, mask);
         double rot = 180.0, trans = 180.0;
-        if (!E.empty() && cv::essential::recoverPose(E, s.px1, s.px2, K, R, t, mask) > 0) {
+        if (!E.empty() && cv::essential::recoverPoseIter(E, s.px1, s.px2, K, R, t, mask) > 0) {
             rot = essential_test::rotationErrorDeg(cv::Matx33d(R), s.R);
             trans = essential_test::translationErrorDeg(cv::Vec3d(t), s.t);
         }

@@ -85,7 +85,8 @@ TEST(RecoverPose, NoiseFreeScenesGiveTheTruePose)
         SCOPED_TRACE(seed);
         const SyntheticScene s = makeScene(inlierScene(0.0), seed);
         cv::Mat R, t;
-        const int n = cv::essential::recoverPose(cv::Mat(s.E), s.px1, s.px2, cv::Mat(s.K), R, t);
+        const int n =
+            cv::essential::recoverPoseIter(cv::Mat(s.E), s.px1, s.px2, cv::Mat(s.K), R, t);
         ASSERT_EQ(R.rows, 3);
         ASSERT_EQ(R.cols, 3);
         ASSERT_EQ(R.type(), CV_64F);
@@ -109,7 +110,8 @@ TEST(RecoverPose, NoisyScenesGiveTheTruePoseWithTheTrueE)
         SCOPED_TRACE(seed);
         const SyntheticScene s = makeScene(inlierScene(0.001), seed);
         cv::Mat R, t;
-        const int n = cv::essential::recoverPose(cv::Mat(s.E), s.px1, s.px2, cv::Mat(s.K), R, t);
+        const int n =
+            cv::essential::recoverPoseIter(cv::Mat(s.E), s.px1, s.px2, cv::Mat(s.K), R, t);
         EXPECT_LT(rotationErrorDeg(toMatx33(R), s.R), 1e-4);
         EXPECT_LT(translationErrorDeg(toVec3(t), s.t), 1e-4);
         EXPECT_GT(n, static_cast<int>(0.6 * s.px1.size()));
@@ -128,7 +130,7 @@ TEST(RecoverPose, NoisyScenesGiveTheTruePoseWithAnEstimatedE)
             cv::findEssentialMat(s.px1, s.px2, cv::Mat(s.K), cv::RANSAC, 0.999, 1.0, inliers);
         ASSERT_EQ(E.rows, 3);
         cv::Mat R, t, mask = inliers.clone();
-        const int n = cv::essential::recoverPose(E, s.px1, s.px2, cv::Mat(s.K), R, t, mask);
+        const int n = cv::essential::recoverPoseIter(E, s.px1, s.px2, cv::Mat(s.K), R, t, mask);
         EXPECT_LT(rotationErrorDeg(toMatx33(R), s.R), 1.0);
         EXPECT_LT(translationErrorDeg(toVec3(t), s.t), 5.0);
         EXPECT_GT(n, static_cast<int>(0.9 * cv::countNonZero(inliers)));
@@ -148,7 +150,7 @@ TEST(RecoverPose, AgreesWithOpenCVOnOrdinaryScenes)
             cv::Mat Rcv, tcv, Rus, tus, maskCv, maskUs; // empty masks: both create them
             const int ncv = cv::recoverPose(E, s.px1, s.px2, cv::Mat(s.K), Rcv, tcv, maskCv);
             const int nus =
-                cv::essential::recoverPose(E, s.px1, s.px2, cv::Mat(s.K), Rus, tus, maskUs);
+                cv::essential::recoverPoseIter(E, s.px1, s.px2, cv::Mat(s.K), Rus, tus, maskUs);
             EXPECT_LT(cv::norm(Rcv, Rus, cv::NORM_INF), 1e-9);
             EXPECT_LT(cv::norm(tcv, tus, cv::NORM_INF), 1e-9);
             ASSERT_EQ(maskCv.size(), maskUs.size());
@@ -179,7 +181,7 @@ TEST(RecoverPose, AgreesWithOpenCVOnOrdinaryScenes)
             cv::Mat inCv = in.clone(), inUs = in.clone();
             const int mcv = cv::recoverPose(E, s.px1, s.px2, cv::Mat(s.K), Rcv, tcv, inCv);
             const int mus =
-                cv::essential::recoverPose(E, s.px1, s.px2, cv::Mat(s.K), Rus, tus, inUs);
+                cv::essential::recoverPoseIter(E, s.px1, s.px2, cv::Mat(s.K), Rus, tus, inUs);
             EXPECT_EQ(mcv, mus);
             EXPECT_EQ(mus, s.numInliers);
             EXPECT_EQ(cv::countNonZero(inCv != inUs), 0);
@@ -206,7 +208,7 @@ TEST(RecoverPose, DeepSceneShortBaselineRightSignWhereOpenCVFails)
             const cv::Mat E = cv::Mat(s.E);
             cv::Mat Rcv, tcv, Rus, tus;
             const int ncv = cv::recoverPose(E, s.px1, s.px2, cv::Mat(s.K), Rcv, tcv);
-            const int nus = cv::essential::recoverPose(E, s.px1, s.px2, cv::Mat(s.K), Rus, tus);
+            const int nus = cv::essential::recoverPoseIter(E, s.px1, s.px2, cv::Mat(s.K), Rus, tus);
             EXPECT_EQ(ncv, 0); // OpenCV's far-point cut drops every point
             const bool cvRight = rotationErrorDeg(toMatx33(Rcv), s.R) < 1e-3 &&
                                  translationErrorDeg(toVec3(tcv), s.t) < 1e-3;
@@ -232,7 +234,8 @@ TEST(RecoverPose, DeepSceneShortBaselineRightSignWhereOpenCVFails)
         SCOPED_TRACE(seed);
         const SyntheticScene s = makeScene(deepScene(0.001), seed);
         cv::Mat R, t;
-        const int n = cv::essential::recoverPose(cv::Mat(s.E), s.px1, s.px2, cv::Mat(s.K), R, t);
+        const int n =
+            cv::essential::recoverPoseIter(cv::Mat(s.E), s.px1, s.px2, cv::Mat(s.K), R, t);
         EXPECT_LT(rotationErrorDeg(toMatx33(R), s.R), 1e-3);
         EXPECT_GT(toVec3(t).dot(s.t), 0.99);
         EXPECT_GT(n, static_cast<int>(s.px1.size()) / 2);
@@ -254,7 +257,8 @@ TEST(RecoverPose, GivenMaskRestrictsAndKeepsItsValues)
     const cv::Mat input = mask.clone();
     cv::Mat maskCv = mask.clone();
     cv::Mat R, t, Rcv, tcv;
-    const int n = cv::essential::recoverPose(cv::Mat(s.E), s.px1, s.px2, cv::Mat(s.K), R, t, mask);
+    const int n =
+        cv::essential::recoverPoseIter(cv::Mat(s.E), s.px1, s.px2, cv::Mat(s.K), R, t, mask);
     const int ncv = cv::recoverPose(cv::Mat(s.E), s.px1, s.px2, cv::Mat(s.K), Rcv, tcv, maskCv);
 
     ASSERT_EQ(mask.rows, N);
@@ -280,7 +284,8 @@ TEST(RecoverPose, MaskCreatedWhenEmptyMarksWith255)
     const SyntheticScene s = makeScene(inlierScene(0.0), 52);
     const int N = static_cast<int>(s.px1.size());
     cv::Mat R, t, mask, maskCv, Rcv, tcv;
-    const int n = cv::essential::recoverPose(cv::Mat(s.E), s.px1, s.px2, cv::Mat(s.K), R, t, mask);
+    const int n =
+        cv::essential::recoverPoseIter(cv::Mat(s.E), s.px1, s.px2, cv::Mat(s.K), R, t, mask);
     ASSERT_EQ(mask.rows, N);
     ASSERT_EQ(mask.cols, 1);
     ASSERT_EQ(mask.type(), CV_8U);
@@ -295,7 +300,7 @@ TEST(RecoverPose, MaskCreatedWhenEmptyMarksWith255)
     const SyntheticScene s2 = makeScene(near, 52);
     mask.release();
     const int n2 =
-        cv::essential::recoverPose(cv::Mat(s2.E), s2.px1, s2.px2, cv::Mat(s2.K), R, t, mask);
+        cv::essential::recoverPoseIter(cv::Mat(s2.E), s2.px1, s2.px2, cv::Mat(s2.K), R, t, mask);
     cv::recoverPose(cv::Mat(s2.E), s2.px1, s2.px2, cv::Mat(s2.K), Rcv, tcv, maskCv);
     EXPECT_EQ(n2, N);
     EXPECT_EQ(cv::countNonZero(maskCv != mask), 0);
@@ -303,7 +308,7 @@ TEST(RecoverPose, MaskCreatedWhenEmptyMarksWith255)
     // A std::vector<uchar> output works the same way.
     std::vector<uchar> vmask;
     const int n3 =
-        cv::essential::recoverPose(cv::Mat(s.E), s.px1, s.px2, cv::Mat(s.K), R, t, vmask);
+        cv::essential::recoverPoseIter(cv::Mat(s.E), s.px1, s.px2, cv::Mat(s.K), R, t, vmask);
     EXPECT_EQ(n3, N);
     ASSERT_EQ(static_cast<int>(vmask.size()), N);
     for (uchar v : vmask)
@@ -315,7 +320,8 @@ TEST(RecoverPose, MaskAllZeroGivesNoPoints)
     const SyntheticScene s = makeScene(inlierScene(0.0), 53);
     const int N = static_cast<int>(s.px1.size());
     cv::Mat R, t, mask(N, 1, CV_8U, cv::Scalar(0));
-    const int n = cv::essential::recoverPose(cv::Mat(s.E), s.px1, s.px2, cv::Mat(s.K), R, t, mask);
+    const int n =
+        cv::essential::recoverPoseIter(cv::Mat(s.E), s.px1, s.px2, cv::Mat(s.K), R, t, mask);
     EXPECT_EQ(n, 0);
     EXPECT_EQ(cv::countNonZero(mask), 0);
     EXPECT_EQ(mask.rows, N);
@@ -329,12 +335,13 @@ TEST(RecoverPose, ZeroEssentialMatrixGivesTheNoPoseAnswer)
     const SyntheticScene s = makeScene(inlierScene(0.0), 55);
     const cv::Mat zero = cv::Mat::zeros(3, 3, CV_64F);
     cv::Mat R, t, X, mask;
-    EXPECT_EQ(cv::essential::recoverPose(zero, s.px1, s.px2, cv::Mat(s.K), R, t, 50.0, mask, X), 0);
+    EXPECT_EQ(cv::essential::recoverPoseIter(zero, s.px1, s.px2, cv::Mat(s.K), R, t, 50.0, mask, X),
+              0);
     EXPECT_EQ(cv::norm(R, cv::Mat::eye(3, 3, CV_64F), cv::NORM_INF), 0.0);
     EXPECT_EQ(cv::norm(t), 0.0);
     EXPECT_TRUE(X.empty());
     EXPECT_EQ(cv::countNonZero(mask), 0);
-    EXPECT_EQ(cv::essential::recoverPose(zero, s.px1, s.px2, cv::Mat(s.K), R, t), 0);
+    EXPECT_EQ(cv::essential::recoverPoseIter(zero, s.px1, s.px2, cv::Mat(s.K), R, t), 0);
     EXPECT_EQ(cv::norm(t), 0.0);
 }
 
@@ -344,7 +351,8 @@ TEST(RecoverPose, RowVectorMaskAccepted)
     const int N = static_cast<int>(s.px1.size());
     cv::Mat R, t, mask(1, N, CV_8U, cv::Scalar(1));
     mask.colRange(0, N / 2).setTo(0);
-    const int n = cv::essential::recoverPose(cv::Mat(s.E), s.px1, s.px2, cv::Mat(s.K), R, t, mask);
+    const int n =
+        cv::essential::recoverPoseIter(cv::Mat(s.E), s.px1, s.px2, cv::Mat(s.K), R, t, mask);
     EXPECT_EQ(n, N - N / 2);
     EXPECT_EQ(cv::countNonZero(mask), n);
     EXPECT_EQ(static_cast<int>(mask.total()), N);
@@ -358,13 +366,13 @@ TEST(RecoverPose, BadMaskRaises)
     cv::Mat shortMask(N - 1, 1, CV_8U, cv::Scalar(1));
     cv::Mat intMask(N, 1, CV_32S, cv::Scalar(1));
     try {
-        cv::essential::recoverPose(cv::Mat(s.E), s.px1, s.px2, cv::Mat(s.K), R, t, shortMask);
+        cv::essential::recoverPoseIter(cv::Mat(s.E), s.px1, s.px2, cv::Mat(s.K), R, t, shortMask);
         ADD_FAILURE() << "a mask of the wrong size was accepted";
     } catch (const cv::Exception& e) {
         EXPECT_NE(e.err.find("mask"), std::string::npos) << e.err;
     }
     try {
-        cv::essential::recoverPose(cv::Mat(s.E), s.px1, s.px2, cv::Mat(s.K), R, t, intMask);
+        cv::essential::recoverPoseIter(cv::Mat(s.E), s.px1, s.px2, cv::Mat(s.K), R, t, intMask);
         ADD_FAILURE() << "a CV_32S mask was accepted";
     } catch (const cv::Exception& e) {
         EXPECT_NE(e.err.find("mask"), std::string::npos) << e.err;
@@ -384,7 +392,7 @@ TEST(RecoverPose, BadEssentialRaises)
     for (size_t k = 0; k < bad.size(); ++k) {
         SCOPED_TRACE(k);
         try {
-            cv::essential::recoverPose(bad[k], s.px1, s.px2, cv::Mat(s.K), R, t);
+            cv::essential::recoverPoseIter(bad[k], s.px1, s.px2, cv::Mat(s.K), R, t);
             ADD_FAILURE() << "accepted";
         } catch (const cv::Exception& e) {
             EXPECT_EQ(e.code, cv::Error::StsBadArg);
@@ -396,7 +404,7 @@ TEST(RecoverPose, BadEssentialRaises)
         cv::Mat E = cv::Mat(s.E).clone();
         E.at<double>(1, 2) = v;
         try {
-            cv::essential::recoverPose(E, s.px1, s.px2, cv::Mat(s.K), R, t);
+            cv::essential::recoverPoseIter(E, s.px1, s.px2, cv::Mat(s.K), R, t);
             ADD_FAILURE() << "non-finite E accepted";
         } catch (const cv::Exception& e) {
             EXPECT_NE(e.err.find("non-finite"), std::string::npos) << e.err;
@@ -411,8 +419,8 @@ TEST(RecoverPose, ZeroEssentialReturnsZero)
     const SyntheticScene s = makeScene(inlierScene(0.0), 57);
     const int N = static_cast<int>(s.px1.size());
     cv::Mat R, t, mask(N, 1, CV_8U, cv::Scalar(1));
-    const int n = cv::essential::recoverPose(cv::Mat::zeros(3, 3, CV_64F), s.px1, s.px2,
-                                             cv::Mat(s.K), R, t, mask);
+    const int n = cv::essential::recoverPoseIter(cv::Mat::zeros(3, 3, CV_64F), s.px1, s.px2,
+                                                 cv::Mat(s.K), R, t, mask);
     EXPECT_EQ(n, 0);
     EXPECT_EQ(cv::countNonZero(mask), 0);
     EXPECT_LT(cv::norm(R, cv::Mat::eye(3, 3, CV_64F), cv::NORM_INF), 1e-15);
@@ -426,7 +434,7 @@ TEST(RecoverPose, IdenticalPointsDoNotCrash)
     const SyntheticScene s = makeScene(inlierScene(0.0), 58);
     const std::vector<cv::Point2d> p1(20, s.px1[0]), p2(20, s.px2[0]);
     cv::Mat R, t, mask;
-    const int n = cv::essential::recoverPose(cv::Mat(s.E), p1, p2, cv::Mat(s.K), R, t, mask);
+    const int n = cv::essential::recoverPoseIter(cv::Mat(s.E), p1, p2, cv::Mat(s.K), R, t, mask);
     EXPECT_TRUE(n == 0 || n == 20) << n;
     EXPECT_EQ(cv::countNonZero(mask), n);
     EXPECT_EQ(n, 20); // a true correspondence is in front for the true pose
@@ -438,11 +446,11 @@ TEST(RecoverPose, FocalOverloadAndLayoutsAgree)
     const SyntheticScene s = makeScene(inlierScene(0.001), 59);
     const cv::Mat E(s.E);
     cv::Mat R0, t0;
-    const int n0 = cv::essential::recoverPose(E, s.px1, s.px2, cv::Mat(s.K), R0, t0);
+    const int n0 = cv::essential::recoverPoseIter(E, s.px1, s.px2, cv::Mat(s.K), R0, t0);
 
     cv::Mat R, t;
-    const int nf = cv::essential::recoverPose(E, s.px1, s.px2, R, t, s.K(0, 0),
-                                              cv::Point2d(s.K(0, 2), s.K(1, 2)));
+    const int nf = cv::essential::recoverPoseIter(E, s.px1, s.px2, R, t, s.K(0, 0),
+                                                  cv::Point2d(s.K(0, 2), s.K(1, 2)));
     EXPECT_EQ(nf, n0);
     EXPECT_LT(cv::norm(R, R0, cv::NORM_INF), 1e-12);
     EXPECT_LT(cv::norm(t, t0, cv::NORM_INF), 1e-12);
@@ -454,12 +462,12 @@ TEST(RecoverPose, FocalOverloadAndLayoutsAgree)
     cv::Mat(s.px1).convertTo(m1f, CV_32FC2);
     cv::Mat(s.px2).convertTo(m2f, CV_32FC2);
     const int N = static_cast<int>(s.px1.size());
-    const int nv = cv::essential::recoverPose(E, f1, f2, cv::Mat(s.K), R, t);
+    const int nv = cv::essential::recoverPoseIter(E, f1, f2, cv::Mat(s.K), R, t);
     EXPECT_LE(std::abs(nv - n0), N / 100);
     EXPECT_LT(cv::norm(t, t0, cv::NORM_INF), 1e-12);
-    const int nm = cv::essential::recoverPose(E, m1, m2, cv::Mat(s.K), R, t);
+    const int nm = cv::essential::recoverPoseIter(E, m1, m2, cv::Mat(s.K), R, t);
     EXPECT_EQ(nm, n0);
-    const int nc = cv::essential::recoverPose(E, m1f, m2f, cv::Matx33f(s.K), R, t);
+    const int nc = cv::essential::recoverPoseIter(E, m1f, m2f, cv::Matx33f(s.K), R, t);
     EXPECT_LE(std::abs(nc - n0), N / 100);
     EXPECT_LT(cv::norm(R, R0, cv::NORM_INF), 1e-12);
 }

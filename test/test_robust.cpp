@@ -121,7 +121,7 @@ TEST(RobustSolver, EngineSetsTheThresholdOfEveryPart)
         cv::essential::EssentialParams params;
         params.solver = name;
         params.threshold = 2.0;
-        params.maxIters = 20;
+        params.maxIterations = 20;
         cv::Mat mask;
         cv::essential::findEssentialMatIter(s.px1, s.px2, cv::Mat(s.K), params, mask);
         ASSERT_EQ(seen.size(), 1u) << name;

@@ -51,7 +51,8 @@ TEST(TimeBudgetLimits, HugeAndInfiniteBudgetsChangeNothing)
     cfg.inlierRatio = 0.7;
     const auto s = makeScene(cfg, 21);
     const cv::Mat K(s.K);
-    for (const int engine : {cv::essential::ENGINE_ADAPTIVE, cv::essential::ENGINE_PREEMPTIVE}) {
+    for (const cv::essential::EssentialEngine engine :
+         {cv::essential::ENGINE_ADAPTIVE, cv::essential::ENGINE_PREEMPTIVE}) {
         SCOPED_TRACE(engine);
         cv::essential::EssentialParams params;
         params.engine = engine;

@@ -119,7 +119,7 @@ TEST(LocalOptimisation, PolishedModelIsAtLeastAsGoodAndReliabilityHolds)
         params.sprt = false;
         params.refine = false; // compare the search's winners themselves
         params.confidence = 1.0 - 1e-12;
-        params.maxIters = 300;
+        params.maxIterations = 300;
         params.sampleBudget = cv::essential::BUDGET_CONFIDENCE; // so that the cap binds
         cv::essential::EssentialReport a, b;
         cv::Mat mask;
@@ -279,7 +279,7 @@ TEST(Prosac, UnsortedDataAndLmedsStillWork)
     cv::Mat mask;
     run(s, params, r, mask);
     EXPECT_TRUE(reliable(s, r));
-    params.method = cv::LMEDS;
+    params.score = cv::SCORE_METHOD_LMEDS;
     run(s, params, r, mask);
     EXPECT_TRUE(reliable(s, r));
     EXPECT_EQ(r.pointsScored, int64_t(r.hypothesesScored) * r.numPoints);
@@ -322,7 +322,7 @@ struct FlagCase
 {
     int flag;
     int loIterations;
-    int sampler;
+    cv::SamplingMethod sampler;
 };
 
 TEST(UsacFlags, EachFlagRunsItsDocumentedSettings)
@@ -347,7 +347,7 @@ TEST(UsacFlags, EachFlagRunsItsDocumentedSettings)
         cv::essential::EssentialParams params;
         params.confidence = 0.99;
         params.threshold = 1.5;
-        params.maxIters = 700;
+        params.maxIterations = 700;
         params.loIterations = c.loIterations;
         params.sampler = c.sampler;
         params.distance = cv::essential::DISTANCE_SYMMETRIC_EPIPOLAR; // OpenCV's USAC distance
@@ -409,12 +409,13 @@ protected:
         cv::essential::EssentialParams e;
         e.confidence = p.confidence;
         e.threshold = p.threshold;
-        e.maxIters = p.maxIterations;
+        e.maxIterations = p.maxIterations;
         e.seed = static_cast<unsigned>(p.randomGeneratorState);
         e.loIterations = p.loMethod == cv::LOCAL_OPTIM_NULL ? 0 : p.loIterations;
         e.loSampleSize = p.loMethod == cv::LOCAL_OPTIM_NULL ? 0 : p.loSampleSize;
         e.sampler = p.sampler;
-        e.method = p.score == cv::SCORE_METHOD_LMEDS ? cv::LMEDS : cv::RANSAC;
+        e.score =
+            p.score == cv::SCORE_METHOD_LMEDS ? cv::SCORE_METHOD_LMEDS : cv::SCORE_METHOD_MSAC;
         e.distance = cv::essential::DISTANCE_SYMMETRIC_EPIPOLAR; // OpenCV's USAC distance
         return e;
     }
@@ -475,6 +476,13 @@ TEST_F(UsacParamsTest, ScoresAndSamplers)
     EXPECT_TRUE(sameMat(runUsac(p, m2), msac));
     p.score = cv::SCORE_METHOD_LMEDS;
     expectEquivalent(p);
+    // The module's LMedS search has no local sampler: with SCORE_METHOD_LMEDS, the NAPSAC samplers
+    // run as uniform sampling, as documented (the drop-in forms accept what OpenCV accepts).
+    const cv::Mat lmeds = runUsac(p, m1);
+    for (const cv::SamplingMethod local : {cv::SAMPLING_NAPSAC, cv::SAMPLING_PROGRESSIVE_NAPSAC}) {
+        p.sampler = local;
+        EXPECT_TRUE(sameMat(runUsac(p, m2), lmeds));
+    }
     p = usac;
     p.sampler = cv::SAMPLING_PROSAC;
     expectEquivalent(p);
@@ -493,14 +501,6 @@ TEST_F(UsacParamsTest, UnsupportedAndInvalidOptionsRaise)
 {
     cv::Mat mask;
     cv::UsacParams p = usac;
-    // NAPSAC samples are local to a RANSAC-type score; LMedS has no such loop here.
-    p.sampler = cv::SAMPLING_NAPSAC;
-    p.score = cv::SCORE_METHOD_LMEDS;
-    expectError([&] { runUsac(p, mask); }, cv::Error::StsNotImplemented, "SAMPLING_NAPSAC");
-    p.sampler = cv::SAMPLING_PROGRESSIVE_NAPSAC;
-    expectError([&] { runUsac(p, mask); }, cv::Error::StsNotImplemented,
-                "SAMPLING_PROGRESSIVE_NAPSAC");
-    p = usac;
     p.loSampleSize = 3;
     expectError([&] { runUsac(p, mask); }, cv::Error::StsBadArg, "loSampleSize");
     p = usac;
@@ -518,7 +518,7 @@ TEST_F(UsacParamsTest, UnsupportedAndInvalidOptionsRaise)
     e.engine = cv::essential::ENGINE_PREEMPTIVE;
     expectError(runParams, cv::Error::StsNotImplemented, "SAMPLING_NAPSAC");
     e = cv::essential::EssentialParams();
-    e.sampler = 99;
+    e.sampler = static_cast<cv::SamplingMethod>(99);
     expectError(runParams, cv::Error::StsBadArg, "sampler");
     e = cv::essential::EssentialParams();
     e.sampler = cv::SAMPLING_PROSAC;

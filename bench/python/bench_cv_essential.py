@@ -97,7 +97,7 @@ def main():
     # The fixed cost of a call, where the library does almost nothing (one sample, no refinement,
     # no pose): paired differences over many calls.
     p1, p2, K = scene(args.points, 0.9, rng)
-    tiny = cv_essential.EssentialParams(maxIters=1, sampleBudget=cv_essential.BUDGET_CONFIDENCE,
+    tiny = cv_essential.EssentialParams(maxIterations=1, sampleBudget=cv_essential.BUDGET_CONFIDENCE,
                                         refine=False, recoverPose=False, planeParallax=False)
     fixed = []
     for r in range(20 * args.problems):

@@ -124,8 +124,8 @@ py::tuple poseFromCamera(const InputMat& E, const InputMat& points1, const Input
     cv::Mat R, t, mask = maskCopy(maskIn);
     int inFront = 0;
     withoutGil([&] {
-        inFront = cv::essential::recoverPose(E.mat, points1.mat, points2.mat, cameraMatrix.mat, R,
-                                             t, mask);
+        inFront = cv::essential::recoverPoseIter(E.mat, points1.mat, points2.mat, cameraMatrix.mat,
+                                                 R, t, mask);
     });
     return py::make_tuple(inFront, toNumpy(R), toNumpy(t), toNumpy(mask));
 }
@@ -137,8 +137,8 @@ py::tuple poseFromFocal(const InputMat& E, const InputMat& points1, const InputM
     cv::Mat R, t, mask = maskCopy(maskIn);
     int inFront = 0;
     withoutGil([&] {
-        inFront = cv::essential::recoverPose(E.mat, points1.mat, points2.mat, R, t, focal,
-                                             cv::Point2d(pp.first, pp.second), mask);
+        inFront = cv::essential::recoverPoseIter(E.mat, points1.mat, points2.mat, R, t, focal,
+                                                 cv::Point2d(pp.first, pp.second), mask);
     });
     return py::make_tuple(inFront, toNumpy(R), toNumpy(t), toNumpy(mask));
 }
@@ -150,8 +150,8 @@ py::tuple poseWithDistance(const InputMat& E, const InputMat& points1, const Inp
     cv::Mat R, t, points, mask = maskCopy(maskIn);
     int inFront = 0;
     withoutGil([&] {
-        inFront = cv::essential::recoverPose(E.mat, points1.mat, points2.mat, cameraMatrix.mat, R,
-                                             t, distanceThresh, mask, points);
+        inFront = cv::essential::recoverPoseIter(E.mat, points1.mat, points2.mat, cameraMatrix.mat,
+                                                 R, t, distanceThresh, mask, points);
     });
     return py::make_tuple(inFront, toNumpy(R), toNumpy(t), toNumpy(mask), toNumpy(points));
 }
@@ -165,9 +165,9 @@ py::tuple poseFromTwoCameras(const InputMat& points1, const InputMat& points2,
     cv::Mat E, R, t, mask = maskCopy(maskIn);
     int inFront = 0;
     withoutGil([&] {
-        inFront = cv::essential::recoverPose(points1.mat, points2.mat, cameraMatrix1.mat,
-                                             distCoeffs1.mat, cameraMatrix2.mat, distCoeffs2.mat, E,
-                                             R, t, method, prob, threshold, mask);
+        inFront = cv::essential::recoverPoseIter(
+            points1.mat, points2.mat, cameraMatrix1.mat, distCoeffs1.mat, cameraMatrix2.mat,
+            distCoeffs2.mat, E, R, t, method, prob, threshold, mask);
     });
     return py::make_tuple(inFront, toNumpy(E), toNumpy(R), toNumpy(t), toNumpy(mask));
 }
@@ -203,6 +203,12 @@ const char* const kPoseDoc =
     ".   corresponding points, as cv2.recoverPose does (the same forms and results). The first\n"
     ".   form estimates E with findEssentialMatIter. As in cv2, a positional fifth argument after\n"
     ".   the camera matrix is the (ignored) output R: give distanceThresh by keyword.";
+
+const char* const kPoseIterDoc =
+    "recoverPoseIter(...) -> the same forms and results as recoverPose\n"
+    ".   @brief The C++ API's name for recoverPose (cv::essential::recoverPoseIter); both names "
+    "are\n"
+    ".   the same function here.";
 
 } // namespace
 
@@ -249,6 +255,11 @@ void defineDropIn(py::module_& m, py::module_& forms)
               py::arg("pp") = Point(0.0, 0.0), py::arg("mask") = none);
     defineWithCv2Errors(m, forms, "recoverPose", {"E", "points1", "points2", "cameraMatrix"},
                         kPoseDoc);
+    // The C++ API's name (the Iter suffix cannot collide with cv::recoverPose under
+    // using-directives); in Python both names are the same forms.
+    forms.attr("recoverPoseIter") = forms.attr("recoverPose");
+    defineWithCv2Errors(m, forms, "recoverPoseIter", {"E", "points1", "points2", "cameraMatrix"},
+                        kPoseIterDoc);
 }
 
 } // namespace cv_essential_py

@@ -22,31 +22,115 @@ namespace {
 using Params = cv::essential::EssentialParams;
 using Report = cv::essential::EssentialReport;
 
-/** The fields of EssentialParams in the header's order (repr and pickling walk them;
-python/tests/test_params_report.py checks the list against the header). */
+/** Calls f(name, member pointer) for each field of EssentialParams in the header's order: the one
+list the Python attributes, keywords, repr and pickled state are made from
+(python/tests/test_params_report.py checks it against the header). */
+template <class F> void forEachParamField(F&& f)
+{
+    f("solver", &Params::solver);
+    f("score", &Params::score);
+    f("engine", &Params::engine);
+    f("timeBudgetMs", &Params::timeBudgetMs);
+    f("preemptiveHypotheses", &Params::preemptiveHypotheses);
+    f("preemptiveBlockSize", &Params::preemptiveBlockSize);
+    f("confidence", &Params::confidence);
+    f("threshold", &Params::threshold);
+    f("distance", &Params::distance);
+    f("maxIterations", &Params::maxIterations);
+    f("sampleBudget", &Params::sampleBudget);
+    f("budgetLocalSamples", &Params::budgetLocalSamples);
+    f("planeParallax", &Params::planeParallax);
+    f("loIterations", &Params::loIterations);
+    f("loSampleSize", &Params::loSampleSize);
+    f("sampler", &Params::sampler);
+    f("sprt", &Params::sprt);
+    f("seed", &Params::seed);
+    f("refine", &Params::refine);
+    f("recoverPose", &Params::recoverPose);
+}
+
 const std::vector<std::string>& paramFields()
 {
-    static const std::vector<std::string> fields = {"solver",
-                                                    "method",
-                                                    "engine",
-                                                    "timeBudgetMs",
-                                                    "preemptiveHypotheses",
-                                                    "preemptiveBlockSize",
-                                                    "confidence",
-                                                    "threshold",
-                                                    "distance",
-                                                    "maxIters",
-                                                    "sampleBudget",
-                                                    "budgetLocalSamples",
-                                                    "planeParallax",
-                                                    "loIterations",
-                                                    "loSampleSize",
-                                                    "sampler",
-                                                    "sprt",
-                                                    "seed",
-                                                    "refine",
-                                                    "recoverPose"};
+    static const std::vector<std::string> fields = [] {
+        std::vector<std::string> names;
+        forEachParamField([&](const char* name, auto) { names.push_back(name); });
+        return names;
+    }();
     return fields;
+}
+
+/** The values of each enum that EssentialParams holds, with the names Python spells them by: as in
+cv2, an enum field is an int in Python; assigning a value outside its enumeration raises ValueError
+naming the field and the constants it takes. */
+struct EnumValue
+{
+    int value;
+    const char* name;
+};
+const std::vector<EnumValue>& enumValues(cv::ScoreMethod*)
+{
+    static const std::vector<EnumValue> v = {{cv::SCORE_METHOD_RANSAC, "cv2.SCORE_METHOD_RANSAC"},
+                                             {cv::SCORE_METHOD_MSAC, "cv2.SCORE_METHOD_MSAC"},
+                                             {cv::SCORE_METHOD_MAGSAC, "cv2.SCORE_METHOD_MAGSAC"},
+                                             {cv::SCORE_METHOD_LMEDS, "cv2.SCORE_METHOD_LMEDS"}};
+    return v;
+}
+const std::vector<EnumValue>& enumValues(cv::SamplingMethod*)
+{
+    static const std::vector<EnumValue> v = {
+        {cv::SAMPLING_UNIFORM, "cv2.SAMPLING_UNIFORM"},
+        {cv::SAMPLING_PROGRESSIVE_NAPSAC, "cv2.SAMPLING_PROGRESSIVE_NAPSAC"},
+        {cv::SAMPLING_NAPSAC, "cv2.SAMPLING_NAPSAC"},
+        {cv::SAMPLING_PROSAC, "cv2.SAMPLING_PROSAC"}};
+    return v;
+}
+const std::vector<EnumValue>& enumValues(cv::essential::EssentialEngine*)
+{
+    static const std::vector<EnumValue> v = {
+        {cv::essential::ENGINE_ADAPTIVE, "ENGINE_ADAPTIVE"},
+        {cv::essential::ENGINE_OPENCV, "ENGINE_OPENCV"},
+        {cv::essential::ENGINE_PREEMPTIVE, "ENGINE_PREEMPTIVE"}};
+    return v;
+}
+const std::vector<EnumValue>& enumValues(cv::essential::EssentialDistance*)
+{
+    static const std::vector<EnumValue> v = {
+        {cv::essential::DISTANCE_SAMPSON, "DISTANCE_SAMPSON"},
+        {cv::essential::DISTANCE_SYMMETRIC_EPIPOLAR, "DISTANCE_SYMMETRIC_EPIPOLAR"}};
+    return v;
+}
+const std::vector<EnumValue>& enumValues(cv::essential::EssentialSampleBudget*)
+{
+    static const std::vector<EnumValue> v = {
+        {cv::essential::BUDGET_CONFIDENCE, "BUDGET_CONFIDENCE"},
+        {cv::essential::BUDGET_OPENCV_TIME, "BUDGET_OPENCV_TIME"}};
+    return v;
+}
+
+/** Defines one EssentialParams field as a Python attribute: plain fields as they are, enum fields
+as ints checked against their enumeration. */
+template <class T>
+void defineParamField(py::class_<Params>& cls, const char* name, T Params::*member)
+{
+    if constexpr (std::is_enum_v<T>) {
+        const std::string field = name;
+        cls.def_property(
+            name, [member](const Params& p) { return static_cast<int>(p.*member); },
+            [member, field](Params& p, int value) {
+                std::string names;
+                for (const EnumValue& e : enumValues(static_cast<T*>(nullptr))) {
+                    if (e.value == value) {
+                        p.*member = static_cast<T>(value);
+                        return;
+                    }
+                    names += std::string(names.empty() ? "" : ", ") + e.name;
+                }
+                throw py::value_error("EssentialParams." + field + " must be one of " + names +
+                                      ", got " + std::to_string(value));
+            });
+    } else {
+        cls.def_readwrite(name, member);
+    }
 }
 
 /** "name=repr(value), ..." over `fields` of `self`. */
@@ -158,40 +242,16 @@ void defineParamsAndReport(py::module_& m)
                               "findEssentialMatIter), every field by keyword, e.g.\n"
                               ".   EssentialParams(solver='gn+nister', timeBudgetMs=10). The "
                               "fields and their defaults are\n"
-                              ".   documented in opencv2/essential/params.hpp. method and "
+                              ".   documented in opencv2/essential/params.hpp. score and "
                               "sampler take cv2's constants\n"
-                              ".   (cv2.RANSAC, cv2.LMEDS, cv2.SAMPLING_UNIFORM, ...); engine, "
-                              "distance and sampleBudget this\n"
-                              ".   module's (ENGINE_*, DISTANCE_*, BUDGET_*).");
+                              ".   (cv2.SCORE_METHOD_MSAC, cv2.SCORE_METHOD_LMEDS, "
+                              "cv2.SAMPLING_UNIFORM, ...); engine,\n"
+                              ".   distance and sampleBudget this module's (ENGINE_*, "
+                              "DISTANCE_*, BUDGET_*).");
     params.def(py::init([](const py::kwargs& kwargs) { return paramsFromKeywords(kwargs); }));
-    params.def_readwrite("solver", &Params::solver)
-        .def_readwrite("method", &Params::method)
-        .def_readwrite("engine", &Params::engine)
-        .def_readwrite("timeBudgetMs", &Params::timeBudgetMs)
-        .def_readwrite("preemptiveHypotheses", &Params::preemptiveHypotheses)
-        .def_readwrite("preemptiveBlockSize", &Params::preemptiveBlockSize)
-        .def_readwrite("confidence", &Params::confidence)
-        .def_readwrite("threshold", &Params::threshold)
-        .def_property(
-            "distance", [](const Params& p) { return static_cast<int>(p.distance); },
-            [](Params& p, int d) {
-                if (d != cv::essential::DISTANCE_SAMPSON &&
-                    d != cv::essential::DISTANCE_SYMMETRIC_EPIPOLAR)
-                    throw py::value_error("distance: DISTANCE_SAMPSON or "
-                                          "DISTANCE_SYMMETRIC_EPIPOLAR");
-                p.distance = static_cast<cv::essential::EssentialDistance>(d);
-            })
-        .def_readwrite("maxIters", &Params::maxIters)
-        .def_readwrite("sampleBudget", &Params::sampleBudget)
-        .def_readwrite("budgetLocalSamples", &Params::budgetLocalSamples)
-        .def_readwrite("planeParallax", &Params::planeParallax)
-        .def_readwrite("loIterations", &Params::loIterations)
-        .def_readwrite("loSampleSize", &Params::loSampleSize)
-        .def_readwrite("sampler", &Params::sampler)
-        .def_readwrite("sprt", &Params::sprt)
-        .def_readwrite("seed", &Params::seed)
-        .def_readwrite("refine", &Params::refine)
-        .def_readwrite("recoverPose", &Params::recoverPose)
+    forEachParamField(
+        [&](const char* name, auto member) { defineParamField(params, name, member); });
+    params
         .def("__repr__",
              [](const py::object& self) {
                  return "EssentialParams(" + fieldsRepr(self, paramFields()) + ")";

@@ -115,6 +115,11 @@ def test_recover_pose_forms_as_cv2():
     res = cv_essential.recoverPose(p1, p2, K, None, K, None)
     assert len(res) == 5
     assert rotation_error(res[2], R) < 0.5
+    # recoverPoseIter, the C++ API's name, is the same function under both names.
+    ni, Ri, ti, mi = cv_essential.recoverPoseIter(E, p1, p2, K)
+    assert ni == n and np.array_equal(Ri, Ro) and np.array_equal(ti, to) and np.array_equal(mi, mo)
+    with pytest.raises(cv2.error, match="recoverPoseIter"):
+        cv_essential.recoverPoseIter(E, "not points", p2, K)
 
 
 def test_module_params_report_and_solvers():
@@ -146,7 +151,7 @@ def test_estimate_releases_the_gil():
     p2 = rng.uniform(0, 480, (2000, 2))  # no geometry: the search runs its whole time budget
     K = np.array([[500.0, 0, 320], [0, 500, 240], [0, 0, 1]])
     params = cv_essential.EssentialParams(timeBudgetMs=500.0, confidence=1 - 1e-12,
-                                          maxIters=100000000)
+                                          maxIterations=100000000)
     ended = {}
 
     def estimate():
@@ -176,7 +181,7 @@ def test_python_registered_solver():
     cv_essential.registerSolver("py_cv2_five_point", five_point_with_cv2)
     assert "py_cv2_five_point" in cv_essential.listSolvers()
     p1, p2, K, R, t = scene(n=100)
-    params = cv_essential.EssentialParams(solver="py_cv2_five_point", maxIters=200)
+    params = cv_essential.EssentialParams(solver="py_cv2_five_point", maxIterations=200)
     E, mask, report = cv_essential.findEssentialMatIter(p1, p2, K, params)
     assert report.success and rotation_error(report.R, R) < 0.5
 

@@ -38,11 +38,12 @@ def test_params_have_every_field_with_the_cpp_default():
         assert f"{name}=" in repr(params)
     # Defaults read from C++, spot-checked against the header's text.
     assert params.solver == fields["solver"].strip('"')
-    assert params.maxIters == int(fields["maxIters"])
+    assert params.maxIterations == int(fields["maxIterations"])
     assert params.confidence == float(fields["confidence"])
     assert params.seed == int(fields["seed"].rstrip("ULL"), 16)
     assert params.sampleBudget == cv_essential.BUDGET_OPENCV_TIME
-    assert params.engine == cv_essential.ENGINE_ADAPTIVE and params.method == cv2.RANSAC
+    assert params.engine == cv_essential.ENGINE_ADAPTIVE
+    assert params.score == cv2.SCORE_METHOD_MSAC and params.sampler == cv2.SAMPLING_UNIFORM
 
 
 def test_report_has_every_field():
@@ -93,6 +94,19 @@ def test_params_refuse_unknown_fields_and_bad_values():
     with pytest.raises(TypeError, match="no_such_field"):
         cv_essential.EssentialParams(no_such_field=1)
     with pytest.raises(TypeError):
-        cv_essential.EssentialParams(maxIters="many")
+        cv_essential.EssentialParams(maxIterations="many")
     with pytest.raises(ValueError):
         cv_essential.EssentialParams(distance=7)
+    # Every enum field is an int checked against its enumeration, the error naming the field.
+    for field, bad in [("score", 9), ("engine", 3), ("sampler", -1), ("sampleBudget", 2)]:
+        with pytest.raises(ValueError, match=f"EssentialParams.{field} must be one of"):
+            cv_essential.EssentialParams(**{field: bad})
+    params = cv_essential.EssentialParams(score=cv2.SCORE_METHOD_LMEDS,
+                                          sampler=cv2.SAMPLING_PROSAC,
+                                          engine=cv_essential.ENGINE_PREEMPTIVE)
+    assert (params.score, params.sampler) == (cv2.SCORE_METHOD_LMEDS, cv2.SAMPLING_PROSAC)
+    # A score the module does not implement is a valid ScoreMethod: refused by the estimate.
+    p1, p2, K = scene()
+    with pytest.raises(cv2.error, match="SCORE_METHOD_MAGSAC"):
+        cv_essential.findEssentialMatIter(
+            p1, p2, K, cv_essential.EssentialParams(score=cv2.SCORE_METHOD_MAGSAC))

@@ -97,7 +97,7 @@ void parseValueOption(const std::string& arg, const std::string& value, Options&
     } else if (arg == "--max-iters") {
         if (!cli::parseInt(value, number) || number < 1 || number > 100000000)
             cli::fail("--max-iters must be a positive integer, not '" + value + "'", 2);
-        params.maxIters = static_cast<int>(number);
+        params.maxIterations = static_cast<int>(number);
     } else if (arg == "--seed") {
         if (!cli::parseSeed(value, params.seed))
             cli::fail("--seed must be a non-negative integer, not '" + value + "'", 2);

@@ -71,7 +71,7 @@ PERF_TEST_P(EssentialEstimate, findEssentialMat,
     ASSERT_EQ(3, E.cols);
     if (method != "cv_RANSAC") {
         Mat R, t;
-        cv::essential::recoverPose(E, scene.px1, scene.px2, K, R, t, mask);
+        cv::essential::recoverPoseIter(E, scene.px1, scene.px2, K, R, t, mask);
         EXPECT_LT(essential_test::rotationErrorDeg(Matx33d(R), scene.R), 2.0);
         EXPECT_LT(essential_test::translationErrorDeg(Vec3d(t), scene.t), 5.0);
     }

@@ -232,7 +232,7 @@ Mat estimate(const Problem& problem, const EssentialParams& params, OutputArray 
     const int64 tSearch = getTickCount();
     ransac::SearchSettings settings;
     settings.confidence = params.confidence;
-    settings.maxIters = params.maxIters;
+    settings.maxIters = params.maxIterations;
     settings.preemptiveHypotheses = params.preemptiveHypotheses;
     settings.preemptiveBlockSize = params.preemptiveBlockSize;
     settings.loIterations = params.loIterations;
@@ -245,7 +245,7 @@ Mat estimate(const Problem& problem, const EssentialParams& params, OutputArray 
                                                                            : 0;
     settings.sprt = params.sprt; // used by the adaptive MSAC loop only
     if (params.sampleBudget == BUDGET_OPENCV_TIME) {
-        settings.minSampleCap = ransac::opencvTimeSamples(params.maxIters, n);
+        settings.minSampleCap = ransac::opencvTimeSamples(params.maxIterations, n);
         settings.localSamplesInBudget =
             params.budgetLocalSamples && params.sampler == SAMPLING_UNIFORM;
     }
@@ -254,10 +254,11 @@ Mat estimate(const Problem& problem, const EssentialParams& params, OutputArray 
             ransac::Deadline::after(params.timeBudgetMs - msSince(start) - finishingReserveMs(n));
     ransac::SearchResult found;
     if (params.engine == ENGINE_OPENCV)
-        found = ransac::searchOpenCvLoop(problem, *solver, rng, settings, params.method);
+        found = ransac::searchOpenCvLoop(problem, *solver, rng, settings,
+                                         params.score == SCORE_METHOD_LMEDS ? LMEDS : RANSAC);
     else if (params.engine == ENGINE_PREEMPTIVE)
         found = ransac::searchPreemptive(problem, *solver, rng, settings);
-    else if (params.method == LMEDS)
+    else if (params.score == SCORE_METHOD_LMEDS)
         found = ransac::searchLmeds(problem, *solver, rng, settings);
     else
         found = ransac::searchMsac(problem, *solver, rng, settings);
@@ -270,7 +271,7 @@ Mat estimate(const Problem& problem, const EssentialParams& params, OutputArray 
     rep.localOptimisationsKept = found.localOptimisationsKept;
     rep.sprtRejections = found.sprtRejections;
     if (found.found && params.planeParallax && params.engine == ENGINE_ADAPTIVE &&
-        params.method == RANSAC) {
+        params.score == SCORE_METHOD_MSAC) {
         const ransac::Score before = ransac::scoreMsac(found.E, problem);
         const ransac::PlaneParallaxResult checked =
             ransac::checkPlaneAndParallax(problem, found.E, before, rng);
@@ -386,10 +387,10 @@ EssentialParams dropInParams(int method, double prob, double threshold, int maxI
     if (method != LMEDS) checkThreshold(threshold);
     checkMaxIters(maxIters);
     EssentialParams p;
-    p.method = method == LMEDS ? LMEDS : RANSAC;
+    p.score = method == LMEDS ? SCORE_METHOD_LMEDS : SCORE_METHOD_MSAC;
     p.confidence = prob;
     p.threshold = method == LMEDS ? 1.0 : threshold;
-    p.maxIters = maxIters;
+    p.maxIterations = maxIters;
     applyUsacFlag(method, p);
     // OpenCV 4.6's USAC thresholds the symmetric epipolar distance for essential matrices.
     if (method >= USAC_DEFAULT) p.distance = DISTANCE_SYMMETRIC_EPIPOLAR;
@@ -398,18 +399,19 @@ EssentialParams dropInParams(int method, double prob, double threshold, int maxI
 
 namespace {
 
-/** The module's settings from a UsacParams (the mapping documented in essential.hpp). */
-/** An enum field of UsacParams as the int it holds. A value outside the enumeration (which a caller
-can make only by a cast) must be rejected with a message, but loading it as the enum type is
-undefined behaviour (UBSan's -fsanitize=enum reports it), so the bytes are read as an int. */
+/** An enum field (of UsacParams or EssentialParams) as the int it holds. A value outside the
+enumeration (which a caller can make only by a cast) must be rejected with a message, but loading it
+as the enum type is undefined behaviour (UBSan's -fsanitize=enum reports it), so the bytes are read
+as an int. */
 template <typename Enum> int rawEnum(const Enum& field)
 {
-    static_assert(sizeof(Enum) == sizeof(int), "UsacParams enums are int-sized");
+    static_assert(sizeof(Enum) == sizeof(int), "the enums read here are int-sized");
     int value;
     std::memcpy(&value, &field, sizeof value);
     return value;
 }
 
+/** The module's settings from a UsacParams (the mapping documented in essential.hpp). */
 EssentialParams usacParams(const UsacParams& usac)
 {
     EssentialParams p;
@@ -418,11 +420,11 @@ EssentialParams usacParams(const UsacParams& usac)
     switch (score) {
     case SCORE_METHOD_RANSAC:
     case SCORE_METHOD_MSAC:
-    case SCORE_METHOD_MAGSAC:
-        p.method = RANSAC;
+    case SCORE_METHOD_MAGSAC: // MSAC with the given threshold (MAGSAC++ is not implemented)
+        p.score = SCORE_METHOD_MSAC;
         break;
     case SCORE_METHOD_LMEDS:
-        p.method = LMEDS;
+        p.score = SCORE_METHOD_LMEDS;
         break;
     default:
         CV_Error(Error::StsBadArg,
@@ -433,7 +435,7 @@ EssentialParams usacParams(const UsacParams& usac)
     case SAMPLING_PROSAC:
     case SAMPLING_NAPSAC:
     case SAMPLING_PROGRESSIVE_NAPSAC:
-        p.sampler = sampler;
+        p.sampler = static_cast<SamplingMethod>(sampler);
         break;
     default:
         CV_Error(Error::StsBadArg,
@@ -463,18 +465,16 @@ EssentialParams usacParams(const UsacParams& usac)
     }
     // isParallel and neighborsSearch are ignored (see essential.hpp).
     checkConfidence(usac.confidence);
+    // The module's LMedS search has no local sampler: with SCORE_METHOD_LMEDS the NAPSAC samplers
+    // run as uniform sampling (the drop-in forms accept what OpenCV accepts; see essential.hpp).
     if ((p.sampler == SAMPLING_NAPSAC || p.sampler == SAMPLING_PROGRESSIVE_NAPSAC) &&
-        p.method == LMEDS)
-        CV_Error(Error::StsNotImplemented,
-                 "UsacParams::sampler " +
-                     std::string(p.sampler == SAMPLING_NAPSAC ? "SAMPLING_NAPSAC"
-                                                              : "SAMPLING_PROGRESSIVE_NAPSAC") +
-                     " needs a RANSAC-type score, not SCORE_METHOD_LMEDS");
-    if (p.method != LMEDS) checkThreshold(usac.threshold);
-    checkMaxIters(usac.maxIterations);
+        p.score == SCORE_METHOD_LMEDS)
+        p.sampler = SAMPLING_UNIFORM;
+    if (p.score != SCORE_METHOD_LMEDS) checkThreshold(usac.threshold);
+    checkMaxIters(usac.maxIterations, "UsacParams::maxIterations");
     p.confidence = usac.confidence;
-    p.threshold = p.method == LMEDS ? 1.0 : usac.threshold;
-    p.maxIters = usac.maxIterations;
+    p.threshold = p.score == SCORE_METHOD_LMEDS ? 1.0 : usac.threshold;
+    p.maxIterations = usac.maxIterations;
     p.seed = static_cast<uint64>(static_cast<unsigned>(usac.randomGeneratorState));
     p.distance = DISTANCE_SYMMETRIC_EPIPOLAR; // as OpenCV's USAC (LMedS ranks by Sampson)
     return p;
@@ -484,7 +484,7 @@ EssentialParams usacParams(const UsacParams& usac)
 was asked (as OpenCV's LMEDS), everything else uses EssentialParams::distance. */
 EssentialDistance inlierDistance(const EssentialParams& params)
 {
-    return params.method == LMEDS ? DISTANCE_SAMPSON : params.distance;
+    return params.score == SCORE_METHOD_LMEDS ? DISTANCE_SAMPSON : params.distance;
 }
 
 Mat estimateWithCamera(InputArray points1, InputArray points2, const Matx33d& K,
@@ -612,21 +612,38 @@ Mat findEssentialMatIter(InputArray points1, InputArray points2, InputArray came
                          const EssentialParams& params, OutputArray mask, EssentialReport* report)
 {
     const int64 start = getTickCount();
-    if (params.method != RANSAC && params.method != LMEDS)
-        CV_Error(Error::StsBadArg, "EssentialParams::method must be RANSAC or LMEDS, got " +
-                                       std::to_string(params.method));
-    if (params.engine != ENGINE_ADAPTIVE && params.engine != ENGINE_OPENCV &&
-        params.engine != ENGINE_PREEMPTIVE)
+    const int score = rawEnum(params.score), engine = rawEnum(params.engine),
+              sampler = rawEnum(params.sampler), budget = rawEnum(params.sampleBudget),
+              distance = rawEnum(params.distance);
+    switch (score) {
+    case SCORE_METHOD_MSAC:
+    case SCORE_METHOD_LMEDS:
+        break;
+    case SCORE_METHOD_RANSAC:
+    case SCORE_METHOD_MAGSAC:
+        CV_Error(
+            Error::StsNotImplemented,
+            std::string("EssentialParams::score ") +
+                (score == SCORE_METHOD_RANSAC ? "SCORE_METHOD_RANSAC" : "SCORE_METHOD_MAGSAC") +
+                " is not implemented; use SCORE_METHOD_MSAC or SCORE_METHOD_LMEDS");
+    default:
+        CV_Error(Error::StsBadArg, "EssentialParams::score must be SCORE_METHOD_MSAC or "
+                                   "SCORE_METHOD_LMEDS, got " +
+                                       std::to_string(score));
+    }
+    if (engine != ENGINE_ADAPTIVE && engine != ENGINE_OPENCV && engine != ENGINE_PREEMPTIVE)
         CV_Error(Error::StsBadArg, "EssentialParams::engine must be ENGINE_ADAPTIVE, "
                                    "ENGINE_PREEMPTIVE or ENGINE_OPENCV, got " +
-                                       std::to_string(params.engine));
-    if (params.engine == ENGINE_PREEMPTIVE && params.method != RANSAC)
-        CV_Error(Error::StsBadArg, "ENGINE_PREEMPTIVE scores with MSAC: method must be RANSAC");
+                                       std::to_string(engine));
+    if (engine == ENGINE_PREEMPTIVE && score != SCORE_METHOD_MSAC)
+        CV_Error(Error::StsNotImplemented,
+                 "ENGINE_PREEMPTIVE scores with MSAC: EssentialParams::score must be "
+                 "SCORE_METHOD_MSAC");
     if (!(params.timeBudgetMs >= 0))
         CV_Error(Error::StsBadArg, "EssentialParams::timeBudgetMs must be >= 0 (0 or +inf: no "
                                    "budget), got " +
                                        std::to_string(params.timeBudgetMs));
-    if (hasTimeBudget(params) && params.engine == ENGINE_OPENCV)
+    if (hasTimeBudget(params) && engine == ENGINE_OPENCV)
         CV_Error(Error::StsNotImplemented,
                  "EssentialParams::timeBudgetMs is not supported by ENGINE_OPENCV (OpenCV's loop "
                  "has no deadline); use ENGINE_ADAPTIVE or ENGINE_PREEMPTIVE");
@@ -641,35 +658,34 @@ Mat findEssentialMatIter(InputArray points1, InputArray points2, InputArray came
         CV_Error(Error::StsBadArg,
                  "EssentialParams::loSampleSize must be 0 (all inliers) or >= 5, got " +
                      std::to_string(params.loSampleSize));
-    if (params.sampler != SAMPLING_UNIFORM && params.sampler != SAMPLING_PROSAC &&
-        params.sampler != SAMPLING_NAPSAC && params.sampler != SAMPLING_PROGRESSIVE_NAPSAC)
+    if (sampler != SAMPLING_UNIFORM && sampler != SAMPLING_PROSAC && sampler != SAMPLING_NAPSAC &&
+        sampler != SAMPLING_PROGRESSIVE_NAPSAC)
         CV_Error(Error::StsBadArg, "EssentialParams::sampler must be SAMPLING_UNIFORM, "
                                    "SAMPLING_PROSAC, SAMPLING_NAPSAC or "
                                    "SAMPLING_PROGRESSIVE_NAPSAC, got " +
-                                       std::to_string(params.sampler));
-    if (params.sampler == SAMPLING_PROSAC && params.engine != ENGINE_ADAPTIVE)
+                                       std::to_string(sampler));
+    if (sampler == SAMPLING_PROSAC && engine != ENGINE_ADAPTIVE)
         CV_Error(Error::StsNotImplemented,
                  "EssentialParams::sampler SAMPLING_PROSAC needs ENGINE_ADAPTIVE");
-    if ((params.sampler == SAMPLING_NAPSAC || params.sampler == SAMPLING_PROGRESSIVE_NAPSAC) &&
-        (params.engine != ENGINE_ADAPTIVE || params.method != RANSAC))
-        CV_Error(Error::StsNotImplemented,
-                 std::string("EssentialParams::sampler ") +
-                     (params.sampler == SAMPLING_NAPSAC ? "SAMPLING_NAPSAC"
-                                                        : "SAMPLING_PROGRESSIVE_NAPSAC") +
-                     " needs ENGINE_ADAPTIVE with method RANSAC");
-    if (params.sampleBudget != BUDGET_CONFIDENCE && params.sampleBudget != BUDGET_OPENCV_TIME)
+    if ((sampler == SAMPLING_NAPSAC || sampler == SAMPLING_PROGRESSIVE_NAPSAC) &&
+        (engine != ENGINE_ADAPTIVE || score != SCORE_METHOD_MSAC))
+        CV_Error(
+            Error::StsNotImplemented,
+            std::string("EssentialParams::sampler ") +
+                (sampler == SAMPLING_NAPSAC ? "SAMPLING_NAPSAC" : "SAMPLING_PROGRESSIVE_NAPSAC") +
+                " needs ENGINE_ADAPTIVE with SCORE_METHOD_MSAC");
+    if (budget != BUDGET_CONFIDENCE && budget != BUDGET_OPENCV_TIME)
         CV_Error(Error::StsBadArg,
                  "EssentialParams::sampleBudget must be BUDGET_CONFIDENCE or BUDGET_OPENCV_TIME, "
                  "got " +
-                     std::to_string(params.sampleBudget));
-    const int distance = rawEnum(params.distance);
+                     std::to_string(budget));
     if (distance != DISTANCE_SAMPSON && distance != DISTANCE_SYMMETRIC_EPIPOLAR)
         CV_Error(Error::StsBadArg, "EssentialParams::distance must be DISTANCE_SAMPSON or "
                                    "DISTANCE_SYMMETRIC_EPIPOLAR, got " +
                                        std::to_string(distance));
     checkConfidence(params.confidence);
     checkThreshold(params.threshold);
-    checkMaxIters(params.maxIters);
+    checkMaxIters(params.maxIterations, "EssentialParams::maxIterations");
     const Matx33d K = readCameraMatrix(cameraMatrix, "cameraMatrix");
     // The module's own overload reads every layout of any drop-in form (the USAC reading accepts
     // them all) and writes the mask as N x 1.

@@ -131,9 +131,10 @@ void checkThreshold(double threshold)
         badArg("threshold must be positive and finite, got " + std::to_string(threshold));
 }
 
-void checkMaxIters(int maxIters)
+void checkMaxIters(int maxIters, const char* name)
 {
-    if (maxIters <= 0) badArg("maxIters must be positive, got " + std::to_string(maxIters));
+    if (maxIters <= 0)
+        badArg(std::string(name) + " must be positive, got " + std::to_string(maxIters));
 }
 
 void checkMethod(int method)

@@ -65,7 +65,9 @@ Problem makeProblem(std::vector<Point2d> n1, std::vector<Point2d> n2, double thr
 /** Argument checks shared by every overload; messages name the argument. */
 void checkConfidence(double prob);
 void checkThreshold(double threshold);
-void checkMaxIters(int maxIters);
+/** `name` is the caller's spelling: "maxIters" (the drop-in forms) or
+"EssentialParams::maxIterations", "UsacParams::maxIterations". */
+void checkMaxIters(int maxIters, const char* name = "maxIters");
 void checkMethod(int method);
 
 } // namespace essential

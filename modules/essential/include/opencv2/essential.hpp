@@ -26,26 +26,30 @@ scale that follows the estimated noise, on the points near it and in front of bo
 (docs/ACCURACY.md).
 
 findEssentialMatIter() has every overload of `cv::findEssentialMat` (OpenCV 4.6) with the same
-arguments, defaults, return value and mask, and recoverPose() every overload of `cv::recoverPose`,
-so renaming a call site is enough to switch.
+arguments, defaults, return value and mask, and recoverPoseIter() every overload of
+`cv::recoverPose`, so renaming a call site is enough to switch. The `Iter` suffix keeps the names
+apart from OpenCV's under `using namespace cv; using namespace cv::essential;` and under
+argument-dependent lookup (every argument is a cv:: type, so an unqualified call also finds the cv::
+function). The same functions are also declared as `cv::essential::recoverPose`, the module's
+original spelling: call that one qualified, since unqualified it is ambiguous with cv::recoverPose.
 
 Input and output arrays are taken exactly as OpenCV 4.6 takes them (checked against OpenCV itself
 for every overload, method flag, 21 point layouts and 7 mask forms by test/test_drop_in_layouts.cpp
 and test/test_drop_in_recover_pose.cpp; the table: docs/ROBUSTNESS.md, "Point layouts"). OpenCV
 reads points in one of three ways, depending on the overload and the method:
 
-- RANSAC and LMEDS (camera-matrix and focal forms), and recoverPose() from E: any depth, converted
-  to double; `std::vector<Point2f|Point2d|Point>`, an N x 2 one-channel or N x 1 / 1 x N
+- RANSAC and LMEDS (camera-matrix and focal forms), and recoverPoseIter() from E: any depth,
+converted to double; `std::vector<Point2f|Point2d|Point>`, an N x 2 one-channel or N x 1 / 1 x N
   two-channel matrix, views included; both arrays with the same number of channels (so not a
   vector of points with an N x 2 matrix);
 - the USAC flags (camera-matrix and focal forms) and the UsacParams form without distortion: any
   depth; one point per row of an N x k matrix (k >= 2; the first two coordinates are x and y, so
   homogeneous N x 3 points must have w = 1) or per element of a k-channel array, a matrix with fewer
   rows than columns transposed first (2 x N, 3 x N);
-- the forms with distortion coefficients (which call cv::undistortPoints first) and recoverPose()'s
-  two-camera form: CV_32F or CV_64F only; the shapes above or their transposes (2 x N), continuous
-  in memory (a view such as `pts.colRange(0, 2)` is rejected, except by the UsacParams form, which
-  copies it first).
+- the forms with distortion coefficients (which call cv::undistortPoints first) and
+recoverPoseIter()'s two-camera form: CV_32F or CV_64F only; the shapes above or their transposes (2
+x N), continuous in memory (a view such as `pts.colRange(0, 2)` is rejected, except by the
+UsacParams form, which copies it first).
 
 A mask is written as by the same path: RANSAC and LMEDS keep a caller's preallocated 1 x N CV_8U
 mask as 1 x N (OpenCV creates the mask allowing the transposed shape) and reject a preallocated
@@ -64,8 +68,8 @@ Differences from `cv::findEssentialMat` and `cv::recoverPose` that a caller may 
 - a scene that does not determine the pose (no parallax, or a plane) still gives E, and the
   EssentialReport of the module's own overload says so (EssentialReport::degenerate);
 - `maxIters` is a budget, not a count of samples: an iterative solver that solves a fraction s of
-  outlier-free samples may draw maxIters / s samples (EssentialParams::maxIters), and when that cap
-  does not buy one expected good sample at the best model's inlier ratio (hard data: few inliers,
+  outlier-free samples may draw maxIters / s samples (EssentialParams::maxIterations), and when that
+cap does not buy one expected good sample at the best model's inlier ratio (hard data: few inliers,
   or a wrong best model), the search goes on, every other sample spatially local, up to the samples
   that fit in three quarters of the time OpenCV's RANSAC spends on `maxIters` iterations with as
   many points (about 20 maxIters at N = 500; EssentialParams::sampleBudget, budgetLocalSamples).
@@ -80,16 +84,16 @@ Differences from `cv::findEssentialMat` and `cv::recoverPose` that a caller may 
 - LMEDS derives its threshold from the median error as OpenCV does, with OpenCV's floor of 0.001
   normalised units; a solver whose sample is as large as the point set (robust on 10 points) uses
   the finite-sample correction of one spare point instead of dividing by zero;
-- recoverPose() from E (without distanceThresh) counts every point in front of both cameras:
+- recoverPoseIter() from E (without distanceThresh) counts every point in front of both cameras:
   OpenCV's overloads ignore points farther than 50 baselines, so that in a deep scene seen from a
   short baseline the sign of t is arbitrary there; the distanceThresh overload honours the caller's
   threshold as OpenCV does (DLT triangulation, OpenCV's cheirality test), so passing 50 reproduces
   OpenCV; its distanceThresh must be positive (+inf: no cut), where OpenCV counts no point;
-- recoverPose() reads a CV_32F E (OpenCV 4.6 fails on one with a type mismatch inside its
+- recoverPoseIter() reads a CV_32F E (OpenCV 4.6 fails on one with a type mismatch inside its
   triangulation); R, t and E may be noArray() (OpenCV asserts);
-- recoverPose()'s two-camera form has no 50-baseline cut either; when no essential matrix is found
-  it returns 0 with E empty, R = I and t = 0, and with exactly five points it keeps, of the several
-  solutions, the one with the most points in front (OpenCV asserts in both cases);
+- recoverPoseIter()'s two-camera form has no 50-baseline cut either; when no essential matrix is
+found it returns 0 with E empty, R = I and t = 0, and with exactly five points it keeps, of the
+several solutions, the one with the most points in front (OpenCV asserts in both cases);
 - a failed estimate always leaves an all-zero N x 1 mask (OpenCV's RANSAC leaves the mask it
   allocated as it was, its UsacParams form leaves the caller's mask untouched);
 - the USAC method flags and the UsacParams overload map onto the module's own engine (adaptive
@@ -148,7 +152,8 @@ The UsacParams overload reads every field of OpenCV 4.6's UsacParams:
 (1) LMedS derives its threshold from the data and has no LO; SCORE_METHOD_MAGSAC scores by MSAC
 with `threshold` (MAGSAC++ is not implemented). (2) NAPSAC draws every sample among
 neighbours (a cell of a 16 x 16 to 2 x 2 grid over both images), PROGRESSIVE_NAPSAC every other
-one; with SCORE_METHOD_LMEDS they raise StsNotImplemented naming the option. (3)
+one; with SCORE_METHOD_LMEDS the samples are uniform (the module's LMedS search has no local
+sampler). (3)
 LOCAL_OPTIM_INNER_LO, LOCAL_OPTIM_INNER_AND_ITER_LO, LOCAL_OPTIM_GC and LOCAL_OPTIM_SIGMA all run
 the module's IRLS local optimisation with `loIterations` and `loSampleSize`. (4) 1 to 4 raise
 StsBadArg; OpenCV 4.6's default of 14 is used as given. (5) The search runs on one thread; the
@@ -156,6 +161,13 @@ result is the same either way. (6) OpenCV uses the neighbourhood graph in its NA
 module's use their own grid) and in graph-cut LO (replaced here by IRLS LO), so it cannot change the
 result. Invalid values of score, sampler, loMethod, loIterations or loSampleSize raise StsBadArg
 naming the field.
+
+One policy for what the module does not implement: the drop-in forms (method flags, UsacParams)
+accept every value OpenCV 4.6 accepts and run the nearest equivalent the tables above name
+(MAGSAC++ as MSAC, graph-cut and sigma LO as IRLS LO, parallel as one thread, NAPSAC with LMedS as
+uniform sampling), so that switching a call site never turns a working call into an exception; the
+module's own EssentialParams form raises StsNotImplemented for the same settings, naming the field,
+because a caller who spells them out there asked for exactly that.
 
 OpenCV 4.7 added `final_polisher` and `final_polisher_iterations` to UsacParams; 4.6 has neither,
 and the module always ends with its IRLS refinement (EssentialParams::refine).
@@ -183,7 +195,7 @@ each stands for are in the module description's table).
 @param threshold maximum distance, in pixels, of an inlier: Sampson distance for RANSAC, symmetric
 epipolar distance for the USAC flags (as OpenCV); unused by LMEDS; > 0.
 @param maxIters maximum number of RANSAC iterations in OpenCV's units (see
-EssentialParams::maxIters); > 0.
+EssentialParams::maxIterations); > 0.
 @param mask output N x 1 CV_8U (a preallocated 1 x N CV_8U mask stays 1 x N with RANSAC and LMEDS,
 as in OpenCV): 1 for the inliers of the returned E, 0 otherwise.
 @return E as a 3 x 3 CV_64F Mat of unit Frobenius norm; with exactly five points, all the distinct
@@ -291,14 +303,14 @@ points.
 @return the number of (masked) points in front of both cameras.
 @sa cv::recoverPose
 */
-CV_EXPORTS_W int recoverPose(InputArray E, InputArray points1, InputArray points2,
-                             InputArray cameraMatrix, OutputArray R, OutputArray t,
-                             InputOutputArray mask = noArray());
+CV_EXPORTS_W int recoverPoseIter(InputArray E, InputArray points1, InputArray points2,
+                                 InputArray cameraMatrix, OutputArray R, OutputArray t,
+                                 InputOutputArray mask = noArray());
 
 /** @overload The camera matrix is [focal 0 pp.x; 0 focal pp.y; 0 0 1]. @sa cv::recoverPose */
-CV_EXPORTS_W int recoverPose(InputArray E, InputArray points1, InputArray points2, OutputArray R,
-                             OutputArray t, double focal = 1.0, Point2d pp = Point2d(0, 0),
-                             InputOutputArray mask = noArray());
+CV_EXPORTS_W int recoverPoseIter(InputArray E, InputArray points1, InputArray points2,
+                                 OutputArray R, OutputArray t, double focal = 1.0,
+                                 Point2d pp = Point2d(0, 0), InputOutputArray mask = noArray());
 
 /** @overload With OpenCV's distance cut and the triangulated points.
 
@@ -316,10 +328,10 @@ columns are also of unit norm, with the sign its SVD gives). When E cannot be de
 matrix) the call returns 0 with R = I, t = 0 and triangulatedPoints empty.
 @sa cv::recoverPose
 */
-CV_EXPORTS_W int recoverPose(InputArray E, InputArray points1, InputArray points2,
-                             InputArray cameraMatrix, OutputArray R, OutputArray t,
-                             double distanceThresh, InputOutputArray mask = noArray(),
-                             OutputArray triangulatedPoints = noArray());
+CV_EXPORTS_W int recoverPoseIter(InputArray E, InputArray points1, InputArray points2,
+                                 InputArray cameraMatrix, OutputArray R, OutputArray t,
+                                 double distanceThresh, InputOutputArray mask = noArray(),
+                                 OutputArray triangulatedPoints = noArray());
 
 /** @overload Estimates E from two cameras with distortion, then recovers the pose.
 
@@ -348,6 +360,31 @@ exactly five points, of the several solutions the one with the most points in fr
 @return the number of (masked) points in front of both cameras.
 @sa cv::recoverPose
 */
+CV_EXPORTS_W int recoverPoseIter(InputArray points1, InputArray points2, InputArray cameraMatrix1,
+                                 InputArray distCoeffs1, InputArray cameraMatrix2,
+                                 InputArray distCoeffs2, OutputArray E, OutputArray R,
+                                 OutputArray t, int method = cv::RANSAC, double prob = 0.999,
+                                 double threshold = 1.0, InputOutputArray mask = noArray());
+
+/** @overload The module's original name for recoverPoseIter(E, points1, points2, cameraMatrix, R,
+t, mask). Call it qualified (`cv::essential::recoverPose(...)`): an unqualified call under `using
+namespace cv::essential` is ambiguous with cv::recoverPose. */
+CV_EXPORTS_W int recoverPose(InputArray E, InputArray points1, InputArray points2,
+                             InputArray cameraMatrix, OutputArray R, OutputArray t,
+                             InputOutputArray mask = noArray());
+
+/** @overload The original name for the focal form of recoverPoseIter(). */
+CV_EXPORTS_W int recoverPose(InputArray E, InputArray points1, InputArray points2, OutputArray R,
+                             OutputArray t, double focal = 1.0, Point2d pp = Point2d(0, 0),
+                             InputOutputArray mask = noArray());
+
+/** @overload The original name for the distanceThresh form of recoverPoseIter(). */
+CV_EXPORTS_W int recoverPose(InputArray E, InputArray points1, InputArray points2,
+                             InputArray cameraMatrix, OutputArray R, OutputArray t,
+                             double distanceThresh, InputOutputArray mask = noArray(),
+                             OutputArray triangulatedPoints = noArray());
+
+/** @overload The original name for the two-camera form of recoverPoseIter(). */
 CV_EXPORTS_W int recoverPose(InputArray points1, InputArray points2, InputArray cameraMatrix1,
                              InputArray distCoeffs1, InputArray cameraMatrix2,
                              InputArray distCoeffs2, OutputArray E, OutputArray R, OutputArray t,

@@ -3,7 +3,6 @@
 
 #include "pose/pose_recovery_dlt.hpp"
 
-
 #include <Eigen/Core>
 #include <Eigen/SVD>
 

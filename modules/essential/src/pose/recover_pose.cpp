@@ -142,23 +142,23 @@ int recoverPoseFromEssential(InputArray E, InputArray points1, InputArray points
 
 } // namespace
 
-int recoverPose(InputArray E, InputArray points1, InputArray points2, InputArray cameraMatrix,
-                OutputArray R, OutputArray t, InputOutputArray mask)
+int recoverPoseIter(InputArray E, InputArray points1, InputArray points2, InputArray cameraMatrix,
+                    OutputArray R, OutputArray t, InputOutputArray mask)
 {
     const Matx33d K = readCameraMatrix(cameraMatrix, "cameraMatrix");
     return recoverPoseFromEssential(E, points1, points2, K, R, t, mask, 0.0, noArray());
 }
 
-int recoverPose(InputArray E, InputArray points1, InputArray points2, OutputArray R, OutputArray t,
-                double focal, Point2d pp, InputOutputArray mask)
+int recoverPoseIter(InputArray E, InputArray points1, InputArray points2, OutputArray R,
+                    OutputArray t, double focal, Point2d pp, InputOutputArray mask)
 {
     return recoverPoseFromEssential(E, points1, points2, cameraFromFocal(focal, pp), R, t, mask,
                                     0.0, noArray());
 }
 
-int recoverPose(InputArray E, InputArray points1, InputArray points2, InputArray cameraMatrix,
-                OutputArray R, OutputArray t, double distanceThresh, InputOutputArray mask,
-                OutputArray triangulatedPoints)
+int recoverPoseIter(InputArray E, InputArray points1, InputArray points2, InputArray cameraMatrix,
+                    OutputArray R, OutputArray t, double distanceThresh, InputOutputArray mask,
+                    OutputArray triangulatedPoints)
 {
     if (!(distanceThresh > 0))
         badArg("distanceThresh must be positive (+inf: no distance cut), got " +
@@ -168,10 +168,10 @@ int recoverPose(InputArray E, InputArray points1, InputArray points2, InputArray
                                     triangulatedPoints);
 }
 
-int recoverPose(InputArray points1, InputArray points2, InputArray cameraMatrix1,
-                InputArray distCoeffs1, InputArray cameraMatrix2, InputArray distCoeffs2,
-                OutputArray E, OutputArray R, OutputArray t, int method, double prob,
-                double threshold, InputOutputArray mask)
+int recoverPoseIter(InputArray points1, InputArray points2, InputArray cameraMatrix1,
+                    InputArray distCoeffs1, InputArray cameraMatrix2, InputArray distCoeffs2,
+                    OutputArray E, OutputArray R, OutputArray t, int method, double prob,
+                    double threshold, InputOutputArray mask)
 {
     const EssentialParams params = dropInParams(method, prob, threshold, 1000);
     std::vector<Point2d> n1, n2;
@@ -205,6 +205,38 @@ int recoverPose(InputArray points1, InputArray points2, InputArray cameraMatrix1
     if (bestInFront < 0) found.rowRange(0, 3).copyTo(Mat(3, 3, CV_64F, best.val));
     if (E.needed()) Mat(best).copyTo(E);
     return recoverPoseNormalisedPoints(best, n1, n2, R, t, mask, 0.0, noArray());
+}
+
+// The original spellings, kept for existing callers: the same functions under cv::recoverPose's
+// name (callable qualified; unqualified they collide with cv::recoverPose, see essential.hpp).
+
+int recoverPose(InputArray E, InputArray points1, InputArray points2, InputArray cameraMatrix,
+                OutputArray R, OutputArray t, InputOutputArray mask)
+{
+    return recoverPoseIter(E, points1, points2, cameraMatrix, R, t, mask);
+}
+
+int recoverPose(InputArray E, InputArray points1, InputArray points2, OutputArray R, OutputArray t,
+                double focal, Point2d pp, InputOutputArray mask)
+{
+    return recoverPoseIter(E, points1, points2, R, t, focal, pp, mask);
+}
+
+int recoverPose(InputArray E, InputArray points1, InputArray points2, InputArray cameraMatrix,
+                OutputArray R, OutputArray t, double distanceThresh, InputOutputArray mask,
+                OutputArray triangulatedPoints)
+{
+    return recoverPoseIter(E, points1, points2, cameraMatrix, R, t, distanceThresh, mask,
+                           triangulatedPoints);
+}
+
+int recoverPose(InputArray points1, InputArray points2, InputArray cameraMatrix1,
+                InputArray distCoeffs1, InputArray cameraMatrix2, InputArray distCoeffs2,
+                OutputArray E, OutputArray R, OutputArray t, int method, double prob,
+                double threshold, InputOutputArray mask)
+{
+    return recoverPoseIter(points1, points2, cameraMatrix1, distCoeffs1, cameraMatrix2, distCoeffs2,
+                           E, R, t, method, prob, threshold, mask);
 }
 
 } // namespace essential

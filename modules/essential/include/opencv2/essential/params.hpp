@@ -17,7 +17,8 @@ namespace essential {
 
 /** Which hypothesise-and-verify loop runs the search. */
 enum EssentialEngine {
-    /** The module's adaptive loop: MSAC for `RANSAC`, least median of squares for `LMEDS`. */
+    /** The module's adaptive loop: MSAC or least median of squares (EssentialParams::score), with
+    SPRT, local optimisation and the samplers. */
     ENGINE_ADAPTIVE = 0,
     /** OpenCV's own RANSAC or LMedS loop (the one cv::findEssentialMat uses, exported by
     libopencv_calib3d), with the chosen solver as its kernel. Available when the build found that
@@ -25,7 +26,7 @@ enum EssentialEngine {
     ENGINE_OPENCV = 1,
     /** Nister's preemptive breadth-first RANSAC, as in the paper: M hypotheses generated up front,
     scored on blocks of B points in a random order, the better half kept after each block. Scores
-    with MSAC; `method` must be RANSAC. */
+    with MSAC; EssentialParams::score must be SCORE_METHOD_MSAC. */
     ENGINE_PREEMPTIVE = 2
 };
 
@@ -45,19 +46,17 @@ enum EssentialDistance {
 /** How many samples the adaptive engine may draw when its stopping rule is not met (hard data: few
 inliers, or the best model so far is wrong). */
 enum EssentialSampleBudget {
-    /** maxIters / s samples, s the solver's hit rate (EssentialParams::maxIters): the confidence
-    OpenCV's cap gives a direct solver. */
+    /** maxIterations / s samples, s the solver's hit rate (EssentialParams::maxIterations): the
+    confidence OpenCV's cap gives a direct solver. */
     BUDGET_CONFIDENCE = 0,
-    /** When even the maxIters / s cap does not buy one expected good sample at the best model's
-    inlier ratio (no model yet, or one as weakly supported as a wrong model on hard data), the
-    search goes on until it has (confidence 1 - 1/e at that ratio), up to the samples that fit in
-    three quarters of the time cv::findEssentialMat's RANSAC spends on maxIters iterations with the
-    same number of points, by a fixed cost model of both (about 20 maxIters samples at N = 500, 24
-    maxIters at N = 4000; src/ransac/opencv_time_budget.hpp has the measurements); and only if a
-    model it could find would pass the final support test (not on a few dozen points without
-    geometry). The result
-    stays deterministic: the cap is a number of samples, not a clock. Data on which the stopping
-    rule is met within maxIters / s (most of them) stop exactly as with BUDGET_CONFIDENCE. */
+    /** When even the maxIterations / s cap does not buy one expected good sample at the best
+    model's inlier ratio (no model yet, or one as weakly supported as a wrong model on hard data),
+    the search goes on until it has (confidence 1 - 1/e at that ratio), up to the samples that fit
+    in three quarters of the time cv::findEssentialMat's RANSAC spends on maxIters iterations with
+    the same number of points (about 20 maxIters samples at N = 500), and only if a model it could
+    find would pass the final support test. The cap is a number of samples from a fixed cost
+    model, not a clock, so the result stays deterministic. Data on which the stopping rule is met
+    within maxIterations / s (most of them) stop exactly as with BUDGET_CONFIDENCE. */
     BUDGET_OPENCV_TIME = 1
 };
 
@@ -69,29 +68,44 @@ findEssentialMatIter()).
 
 The defaults are those of the drop-in overloads, which behave like `cv::findEssentialMat` with
 `method = RANSAC`, `prob = 0.999`, `threshold = 1.0`, `maxIters = 1000`.
+
+Names and types follow cv::UsacParams wherever it has the same setting (`confidence`, `threshold`,
+`maxIterations`, `score`, `sampler`, `loIterations`, `loSampleSize`); the module's own settings use
+its own enums (EssentialEngine, EssentialDistance, EssentialSampleBudget). The seed is `seed`, a
+64-bit value (UsacParams' `randomGeneratorState` is an int).
+
+Unsupported settings: a value this struct can hold but the module cannot run (a score or sampler it
+does not implement, or one the chosen engine does not support) raises StsNotImplemented naming the
+field; an invalid value (outside its range or enumeration) raises StsBadArg. Settings that do not
+apply to the chosen engine (for example `loIterations` with ENGINE_PREEMPTIVE) are ignored, as each
+field says. The drop-in forms, which must take whatever cv::findEssentialMat takes, map what the
+module lacks to its nearest equivalent instead (the tables in the module description).
+
+How the defaults were chosen, with the measurements and the commands that make them:
+docs/PARAMETERS.md.
 */
 // OpenCV's Python generator (modules/python/src2/hdr_parser.py of OpenCV 4.6, inside an OpenCV
-// build) cannot read member initialisers: it would take `int maxIters = 1000;` for a field named
-// "maxIters = 1000". It skips `#ifndef OPENCV_BINDING_PARSER` blocks and reads the declaration in
-// the `#ifdef OPENCV_BINDING_PARSER` block instead, which the compiler never sees: the same struct
-// with the binding macros and the fields without their defaults. Keep the two field lists equal
-// (modules/essential/misc/python/test/test_essential.py checks that cv2.essential has them all).
+// build) cannot read member initialisers: it would take `int maxIterations = 1000;` for a field
+// named "maxIterations = 1000". It skips `#ifndef OPENCV_BINDING_PARSER` blocks and reads the
+// declaration in the `#ifdef OPENCV_BINDING_PARSER` block instead, which the compiler never sees:
+// the same struct with the binding macros and the fields without their defaults. Keep the two field
+// lists equal (modules/essential/misc/python/test/test_essential.py checks that cv2.essential has
+// them all).
 #ifndef OPENCV_BINDING_PARSER
 struct CV_EXPORTS EssentialParams
 {
     /** Name of a registered solver (see listSolvers()) or a composite such as "gn+nister" (see
-    createSolver()). The default draws hypotheses from gn and nister in turn, the combination the
-    paper's conclusion suggests: on the synthetic protocol it was the most reliable per unit time at
-    30% inliers (docs/SOLVERS.md, "Choosing the default"). Under tight time budgets on video, "gn"
-    alone did best on the rail sequences. */
+    createSolver()). Default "gn+nister": hypotheses from gn and nister in turn. */
     std::string solver = "gn+nister";
 
-    /** Scoring: `cv::RANSAC` (adaptive MSAC, truncated Sampson error) or `cv::LMEDS` (least median
-    of squared Sampson errors; the threshold is then derived from the data, as OpenCV does). */
-    int method = RANSAC;
+    /** How hypotheses are scored: `cv::SCORE_METHOD_MSAC` (default; truncated Sampson error, what
+    the drop-in forms run for `cv::RANSAC` and the USAC flags) or `cv::SCORE_METHOD_LMEDS` (least
+    median of squared Sampson errors; the threshold is then derived from the data, as OpenCV does).
+    SCORE_METHOD_RANSAC and SCORE_METHOD_MAGSAC raise StsNotImplemented. */
+    ScoreMethod score = SCORE_METHOD_MSAC;
 
     /** The search loop: ENGINE_ADAPTIVE (default), ENGINE_PREEMPTIVE or ENGINE_OPENCV. */
-    int engine = ENGINE_ADAPTIVE;
+    EssentialEngine engine = ENGINE_ADAPTIVE;
 
     /** Time budget of the whole call in milliseconds; 0 (default) or +inf for none. With a budget
     the search returns the best model found when the time left is what the final refinement needs
@@ -105,76 +119,56 @@ struct CV_EXPORTS EssentialParams
     time to fill timeBudgetMs, or 500 without a budget. */
     int preemptiveHypotheses = 0;
 
-    /** ENGINE_PREEMPTIVE: block size B, the points scored between two halvings. */
+    /** ENGINE_PREEMPTIVE: block size B, the points scored between two halvings. Default 100. */
     int preemptiveBlockSize = 100;
 
-    /** Required probability, in (0, 1), that at least one sample was outlier-free and solved. */
+    /** Required probability, in (0, 1), that at least one sample was outlier-free and solved.
+    Default 0.999. */
     double confidence = 0.999;
 
     /** Inlier threshold in pixels on `distance`, with pixels converted to normalised units by the
-    mean focal length (fx + fy) / 2, exactly as `cv::findEssentialMat`. Must be > 0. */
+    mean focal length (fx + fy) / 2, exactly as `cv::findEssentialMat`. Must be > 0. Default 1. */
     double threshold = 1.0;
 
     /** The distance `threshold` applies to: DISTANCE_SAMPSON (default, as cv::findEssentialMat with
-    RANSAC or LMEDS) or DISTANCE_SYMMETRIC_EPIPOLAR (as OpenCV's USAC; the drop-in overloads select
-    it for the USAC flags and the UsacParams form). Scoring, SPRT, local optimisation's inlier sets,
-    the support test and the mask use it; LMEDS and the final refinement's robust cost always use
+    RANSAC or LMEDS) or DISTANCE_SYMMETRIC_EPIPOLAR (as OpenCV's USAC; the drop-in forms select it
+    for the USAC flags and the UsacParams form). Scoring, SPRT, local optimisation's inlier sets,
+    the support test and the mask use it; LMedS and the final refinement's robust cost always use
     the Sampson distance. */
     EssentialDistance distance = DISTANCE_SAMPSON;
 
-    /** Iteration cap in OpenCV's units. Must be > 0. OpenCV's cap counts samples of a direct
-    5-point solver, each of which solves an outlier-free sample; an iterative solver that reaches
-    the true model on a fraction s of outlier-free samples (EssentialSolver::hitProbabilityAt() at
-    the pose of the best model so far, 0.28 to 0.41 for gn) may draw up to maxIters / s samples, so
-    that the confidence reached at the cap is the same.
-    Those samples are still several times cheaper than OpenCV's (see docs/SOLVERS.md). With
-    sampleBudget = BUDGET_OPENCV_TIME (the default) the cap is raised to the samples that fit in
-    three quarters of OpenCV's time for maxIters iterations. */
-    int maxIters = 1000;
+    /** Iteration cap in OpenCV's units (cv::findEssentialMat's `maxIters`). Must be > 0. Default
+    1000. OpenCV's cap counts samples of a direct 5-point solver, each of which solves an
+    outlier-free sample; an iterative solver that reaches the true model on a fraction s of
+    outlier-free samples (EssentialSolver::hitProbabilityAt()) may draw up to maxIterations / s
+    samples, so that the confidence reached at the cap is the same. sampleBudget may raise the cap
+    further on hard data. */
+    int maxIterations = 1000;
 
-    /** The sample cap of ENGINE_ADAPTIVE with method RANSAC: BUDGET_OPENCV_TIME (default) or
-    BUDGET_CONFIDENCE (EssentialSampleBudget). LMEDS draws OpenCV's fixed number of samples, and
-    ENGINE_PREEMPTIVE and ENGINE_OPENCV have their own budgets; they ignore it. Default
-    BUDGET_OPENCV_TIME, measured on hard sets (few inliers, a dominant plane, repeated structure,
-    docs/HARD_PAIRS.md). */
-    int sampleBudget = BUDGET_OPENCV_TIME;
+    /** The sample cap of ENGINE_ADAPTIVE with SCORE_METHOD_MSAC: BUDGET_OPENCV_TIME (default) or
+    BUDGET_CONFIDENCE. LMedS draws OpenCV's fixed number of samples, and ENGINE_PREEMPTIVE and
+    ENGINE_OPENCV have their own budgets; they ignore it. */
+    EssentialSampleBudget sampleBudget = BUDGET_OPENCV_TIME;
 
-    /** With BUDGET_OPENCV_TIME and the uniform sampler: once the samples pass the confidence cap
-    (maxIters / s, where the stopping rule would have ended the search on data it finds hard),
+    /** With BUDGET_OPENCV_TIME and the uniform sampler: once the samples pass the confidence cap,
     every other sample is spatially local, as SAMPLING_PROGRESSIVE_NAPSAC draws them (a seed and
-    four of its neighbours in both images). Inliers of real pairs cluster on objects and surfaces,
-    so local samples are clean far more often when inliers are few; easy data stop before the cap
-    and never pay for the neighbourhood grid. Default on, measured on the hard sets
-    (docs/HARD_PAIRS.md). */
+    four of its neighbours in both images), because inliers of real pairs cluster on objects and
+    surfaces. Easy data stop before the cap and never pay for it. Default on. */
     bool budgetLocalSamples = true;
 
-    /** After the search (ENGINE_ADAPTIVE with RANSAC), check whether the winner's inliers are
-    dominated by one plane (a homography fitted to them explains at least half) and, if so, search
-    the "plane and parallax" models E = [e']x H, the epipole e' fixed by pairs of points off the
-    plane, keeping one if its MSAC cost is lower. Planar scenes are where a search stops on a model
-    the plane alone supports (the twin of the homography decomposition or a model degrees off); the
-    check costs nothing when no plane dominates and about 1 ms otherwise. Default on, measured on
-    hard sets (docs/HARD_PAIRS.md). */
+    /** After the search (ENGINE_ADAPTIVE with SCORE_METHOD_MSAC), check whether the winner's
+    inliers are dominated by one plane (a homography explains at least half of them) and, if so,
+    search the "plane and parallax" models E = [e']x H, the epipole e' fixed by pairs of points off
+    the plane, keeping one if its MSAC cost is lower: on planar scenes a search tends to stop on the
+    plane's twin pose. Costs nothing when no plane dominates, about 1 ms otherwise. Default on. */
     bool planeParallax = true;
 
-    /** Local optimisation (LO) in the adaptive MSAC engine: each time a hypothesis becomes the
-    best so far, it is polished by this many IRLS iterations (Levenberg-Marquardt on
-    Cauchy-weighted Sampson residuals, scale the threshold) on the points within 2 thresholds of
-    it, and the polished model replaces it when its MSAC cost on all points is lower; the
-    stopping rule then uses the polished model's inlier ratio. 0 disables LO. Ignored by LMEDS and
-    by ENGINE_PREEMPTIVE and ENGINE_OPENCV (they have no LO step). Must be >= 0.
-    Default 5, measured (docs/ENGINE.md, "Local optimisation"): on the synthetic protocol (N = 500,
-    300 problems) LO cuts the samples at 50% inliers from 695 to 513 (the polished model's higher
-    inlier ratio stops the search earlier) and the median time from 3.05 to 2.78 ms, with the same
-    reliability (1.000) and pose errors; at 30% inliers the iteration cap binds either way and the
-    reliability goes from 0.940 to 0.943. On the Leuven pair (essential_pair, seeds 1 to 20) the
-    mean inlier count goes from 327 to 338, 12 runs instead of 8 reaching the better of the two
-    solutions (about 355 inliers). IRLS mostly converges within 5 iterations: 10 gives the same
-    results, 1 to 3 save fewer samples. A best model supported by less than half of the points is
-    first given 10 inner samples (LO-RANSAC's inner RANSAC: minimal samples drawn among the points
-    within 3 thresholds of it, solved and scored like the search's, once 50 samples have been
-    drawn); on 300 problems this raised the reliability at 30% inliers from 0.977 to 0.993 and at
-    25% from 0.810 to 0.957 with the same sample cap (docs/PERFORMANCE.md). */
+    /** Local optimisation (LO) in the adaptive MSAC engine: each new best hypothesis is polished
+    by this many IRLS iterations (Levenberg-Marquardt on Cauchy-weighted Sampson residuals) on the
+    points within 2 thresholds of it, and kept when its MSAC cost on all points is lower; a best
+    model supported by less than half of the points first gets 10 inner samples among its
+    neighbours (LO-RANSAC's inner RANSAC). 0 disables LO. Ignored by LMedS, ENGINE_PREEMPTIVE and
+    ENGINE_OPENCV. Must be >= 0. Default 5. */
     int loIterations = 5;
 
     /** LO on a random subset of this many of the model's inliers; 0 (default): on all of them.
@@ -183,30 +177,20 @@ struct CV_EXPORTS EssentialParams
 
     /** How samples are drawn:
     - `cv::SAMPLING_UNIFORM` (default);
-    - `cv::SAMPLING_PROSAC` (Chum and Matas' progressive sampling: the points must be sorted by
-      quality, best first, as for OpenCV's USAC_PROSAC; samples come from a growing pool of the best
-      points, and the adaptive engine may stop as soon as PROSAC's non-randomness and maximality
-      conditions hold for some pool). Supported by ENGINE_ADAPTIVE (RANSAC and LMEDS);
-    - `cv::SAMPLING_NAPSAC`: every sample spatially local, a seed and four of its neighbours in
-      both images (a cell of a 16 x 16, 8 x 8, 4 x 4 or 2 x 2 grid over each image), for data whose
-      inliers cluster; `cv::SAMPLING_PROGRESSIVE_NAPSAC`: local and uniform samples in turn. Both
-      need ENGINE_ADAPTIVE with RANSAC.
-    Other engines raise StsNotImplemented for a sampler they do not support. docs/HARD_PAIRS.md
-    measures each on hard data. */
-    int sampler = SAMPLING_UNIFORM;
+    - `cv::SAMPLING_PROSAC`: progressive sampling from a growing pool of the best points (the
+      points must be sorted by quality, best first, as for OpenCV's USAC_PROSAC); ENGINE_ADAPTIVE;
+    - `cv::SAMPLING_NAPSAC`: every sample spatially local (a seed and four of its neighbours in
+      both images, on a 16 x 16 to 2 x 2 grid over each image);
+      `cv::SAMPLING_PROGRESSIVE_NAPSAC`: local and uniform samples in turn. Both need
+      ENGINE_ADAPTIVE with SCORE_METHOD_MSAC.
+    A sampler the chosen engine does not support raises StsNotImplemented. */
+    SamplingMethod sampler = SAMPLING_UNIFORM;
 
     /** Verify hypotheses with Wald's sequential probability ratio test (Matas and Chum, R-RANSAC
     with SPRT): the points are checked in a random order and a hypothesis is rejected as soon as
-    the likelihood ratio of "bad model" against "good model" exceeds the threshold A; epsilon is the
-    best model's inlier ratio, delta the fraction of consistent points in rejected hypotheses, and
-    the stopping rule is the paper's (equation (9) with h_i = 1: under each test the probability of
-    drawing a good sample is multiplied by 1 - 1/A_i, Wald's bound on rejecting a good model). Used
-    by ENGINE_ADAPTIVE with RANSAC; ignored by LMEDS, ENGINE_PREEMPTIVE and ENGINE_OPENCV. Default
-    on, measured (docs/ENGINE.md, "SPRT"): at N = 1000 (300 problems, the same samples drawn with
-    and without it) a hypothesis costs 54 point checks instead of 735 at 50% inliers and 105 instead
-    of 911 at 30%, the median call time goes from 4.1 to 2.9 ms and from 12.7 to 7.4 ms, and the
-    reliability is unchanged (1.000, 0.957); on the Leuven pair the inliers are the same for every
-    seed in about half the time. */
+    the likelihood ratio of "bad model" against "good model" exceeds a threshold; the stopping rule
+    accounts for the good models the test may reject. Used by ENGINE_ADAPTIVE with
+    SCORE_METHOD_MSAC; ignored otherwise. Default on. */
     bool sprt = true;
 
     /** Seed of the random generator: the same seed and input give the same result. */
@@ -214,12 +198,12 @@ struct CV_EXPORTS EssentialParams
 
     /** Refine the best hypothesis by iteratively reweighted least squares (IRLS) with
     Levenberg-Marquardt in the 5-DOF parameterisation (Tukey's biweight at a scale that follows the
-    estimated noise, on the points within max(2 thresholds, 4 sigmas) of it and in front of both
-    cameras; docs/ACCURACY.md), then recompute the inlier mask. */
+    estimated noise, on the points near it and in front of both cameras; docs/ACCURACY.md), then
+    recompute the inlier mask. Default on. */
     bool refine = true;
 
     /** When a report is requested: also decompose E into R and t (with the cheirality test of
-    recoverPose()) and store them in the report. */
+    recoverPoseIter()) and store them in the report. Default on. */
     bool recoverPose = true;
 };
 #endif
@@ -228,21 +212,21 @@ struct CV_EXPORTS_W_SIMPLE EssentialParams
 {
     CV_WRAP EssentialParams();
     CV_PROP_RW std::string solver;
-    CV_PROP_RW int method;
-    CV_PROP_RW int engine;
+    CV_PROP_RW ScoreMethod score;
+    CV_PROP_RW EssentialEngine engine;
     CV_PROP_RW double timeBudgetMs;
     CV_PROP_RW int preemptiveHypotheses;
     CV_PROP_RW int preemptiveBlockSize;
     CV_PROP_RW double confidence;
     CV_PROP_RW double threshold;
     CV_PROP_RW EssentialDistance distance;
-    CV_PROP_RW int maxIters;
-    CV_PROP_RW int sampleBudget;
+    CV_PROP_RW int maxIterations;
+    CV_PROP_RW EssentialSampleBudget sampleBudget;
     CV_PROP_RW bool budgetLocalSamples;
     CV_PROP_RW bool planeParallax;
     CV_PROP_RW int loIterations;
     CV_PROP_RW int loSampleSize;
-    CV_PROP_RW int sampler;
+    CV_PROP_RW SamplingMethod sampler;
     CV_PROP_RW bool sprt;
     CV_PROP_RW uint64 seed;
     CV_PROP_RW bool refine;
@@ -277,7 +261,7 @@ struct CV_EXPORTS EssentialReport
 
     int numPoints = 0;           //!< correspondences given
     int inliers = 0;             //!< non-zero entries of the returned mask
-    int iterations = 0;          //!< samples drawn (EssentialParams::maxIters, sampleBudget)
+    int iterations = 0;          //!< samples drawn (EssentialParams::maxIterations, sampleBudget)
     int hypothesesGenerated = 0; //!< solver calls made (one per sample, plus LO's inner samples)
     int hypothesesConverged = 0; //!< essential matrices the solver returned
     int hypothesesScored = 0;    //!< essential matrices scored against the data

@@ -51,10 +51,10 @@ public:
     The built-in solvers return, for any input (degenerate, non-finite or of any scale included)
     and in bounded time, finite essential matrices scaled as \f$E = [t]_\times R\f$ with a unit
     \f$t\f$ (Frobenius norm \f$\sqrt 2\f$), whose singular values are \f$(s, s, 0)\f$: exactly
-    (within \f$10^{-9} s\f$) for gn, lm and robust, which write \f$[t]_\times R\f$ itself, and within
-    \f$10^{-2} s\f$ for nister, which keeps a polynomial root when its trace-constraint residual is
-    below \f$10^{-2}\f$; the solver fuzz target (fuzz/fuzz_solvers.cpp) checks it. The engines need only
-    finite, non-zero matrices (any scale) from a registered solver.
+    (within \f$10^{-9} s\f$) for gn, lm and robust, which write \f$[t]_\times R\f$ itself, and
+    within \f$10^{-2} s\f$ for nister, which keeps a polynomial root when its trace-constraint
+    residual is below \f$10^{-2}\f$; the solver fuzz target (fuzz/fuzz_solvers.cpp) checks it. The
+    engines need only finite, non-zero matrices (any scale) from a registered solver.
     */
     virtual int solve(const Point2d* x1, const Point2d* x2, RNG& rng, Matx33d* solutions) = 0;
 

@@ -81,7 +81,7 @@ class essential_test(NewOpenCVTests):
         # 0.3 px noise on 140 inliers: the pose is within a fraction of a degree (3 degrees for
         # the translation direction, the less determined of the two), and the 60 random points
         # are rejected (at most a few fall near their epipolar lines by chance).
-        _, R_est, t_est, _ = cv.essential.recoverPose(E, p1, p2, K, mask=mask.copy())
+        _, R_est, t_est, _ = cv.essential.recoverPoseIter(E, p1, p2, K, mask=mask.copy())
         rotation, direction = pose_errors_deg(R_est, t_est, R, t)
         self.assertLess(rotation, 0.5)
         self.assertLess(direction, 3.0)
@@ -92,7 +92,9 @@ class essential_test(NewOpenCVTests):
         p1, p2, K, R, t = two_view_scene()
         params = cv.essential.EssentialParams()
         self.assertEqual(params.solver, "gn+nister")
-        self.assertEqual(params.maxIters, 1000)
+        self.assertEqual(params.maxIterations, 1000)
+        self.assertEqual(params.score, cv.SCORE_METHOD_MSAC)
+        self.assertEqual(params.engine, cv.essential.ENGINE_ADAPTIVE)
         params.solver = "gn"
         E, mask, report = cv.essential.findEssentialMatIter(p1, p2, K, params)
         self.assertTrue(report.success)
@@ -107,14 +109,18 @@ class essential_test(NewOpenCVTests):
     def test_recoverPose_forms(self):
         p1, p2, K, R, t = two_view_scene(outliers=0)
         E, _ = cv.essential.findEssentialMatIter(p1, p2, K)
-        count, R_est, t_est, mask = cv.essential.recoverPose(E, p1, p2, K)
+        count, R_est, t_est, mask = cv.essential.recoverPoseIter(E, p1, p2, K)
+        # The original spelling is the same function.
+        count_old, R_old, _, _ = cv.essential.recoverPose(E, p1, p2, K)
+        self.assertEqual(count_old, count)
+        np.testing.assert_array_equal(R_old, R_est)
         self.assertEqual(count, int(np.count_nonzero(mask)))
         self.assertGreater(count, 190)
         rotation, direction = pose_errors_deg(R_est, t_est, R, t)
         self.assertLess(rotation, 0.5)
         self.assertLess(direction, 3.0)
         # OpenCV's distance cut, passed explicitly, with the triangulated points (4 x N).
-        count50, _, _, _, points = cv.essential.recoverPose(E, p1, p2, K, distanceThresh=50.0)
+        count50, _, _, _, points = cv.essential.recoverPoseIter(E, p1, p2, K, distanceThresh=50.0)
         self.assertEqual(points.shape, (4, len(p1)))
         self.assertLessEqual(count50, count)
 

@@ -48,7 +48,9 @@ inline int runCli(const char* program, int (*run)(int, char**), int argc, char**
     try {
         return run(argc, argv);
     } catch (const Failure& failure) {
-        std::cerr << program << ": " << failure.message << "\n";
+        std::string message = failure.message; // one line, whatever a file's name holds
+        std::replace(message.begin(), message.end(), '\n', ' ');
+        std::cerr << program << ": " << message << "\n";
         return failure.code;
     } catch (const cv::Exception& e) {
         std::cerr << program << ": " << e.err << " (in " << e.func << ")\n";

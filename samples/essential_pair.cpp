@@ -2,11 +2,19 @@
 // See the LICENSE file at the top of the source tree.
 //
 // essential_pair: the relative pose of two calibrated images. FAST-9 corners and BRIEF descriptors
-// on an image pyramid, brute-force matching, then cv::essential::findEssentialMatIter; the same
-// matches also go through cv::findEssentialMat + cv::recoverPose for comparison. Prints text or one
-// JSON object (--json), and optionally draws the matches and epipolar lines (--draw).
+// on an image pyramid, matching, then cv::essential::findEssentialMatIter; or the correspondences
+// of any other front end from a file (--matches). The same matches also go through
+// cv::findEssentialMat
+// + cv::recoverPose for comparison (unless --no-opencv). Prints text or one JSON object (--json),
+// optionally writes E, R, t and the inlier mask to a FileStorage file (--output) and draws the
+// matches and epipolar lines (--draw).
 
+#include "cli_camera.hpp"
 #include "cli_common.hpp"
+#include "cli_estimator.hpp"
+#include "cli_frontend_options.hpp"
+#include "cli_matches.hpp"
+#include "cli_parser.hpp"
 #include "frontend/frontend.hpp"
 
 #include <opencv2/calib3d.hpp>
@@ -35,114 +43,54 @@ namespace {
 using essential_samples::directionAngleDeg;
 using essential_samples::elapsedMs;
 using essential_samples::fail;
-using essential_samples::isOption;
-using essential_samples::optionValue;
 using essential_samples::parseDouble;
-using essential_samples::parseInt;
-using essential_samples::parseSeed;
-using essential_samples::readNumberRows;
 using essential_samples::rotationAngleDeg;
-using essential_samples::split;
 
-const char* const kUsage =
-    "usage: essential_pair IMG1 IMG2 (--camera fx,fy,cx,cy | --camera-file F)\n"
-    "                      [--solver NAME] [--threshold PX] [--seed S] [--keep FRACTION]\n"
-    "                      [--max-iters N] [--budget-ms T] [--descriptor brief|orb|patch]\n"
-    "                      [--sampler uniform|prosac|napsac|pnapsac]\n"
-    "                      [--json] [--draw OUT.png]\n"
-    "\n"
-    "  --camera fx,fy,cx,cy  intrinsics of both images, in pixels\n"
-    "  --camera-file F       a file holding `fx fy cx cy [width height]` on one line,\n"
-    "                        or a 3 x 3 camera matrix as three lines of three numbers\n"
-    "  --solver NAME         solver of cv::essential, or a mix such as gn+nister\n"
-    "                        (default: the module's default, gn+nister)\n"
-    "  --threshold PX        inlier threshold on the Sampson distance, pixels (default 1)\n"
-    "  --seed S              seed of the estimator's random generator (decimal or 0x hex)\n"
-    "  --keep FRACTION       fraction of the matches kept, the best by descriptor distance,\n"
-    "                        in (0, 1] (default 0.2)\n"
-    "  --max-iters N         iteration cap of both estimators (default 1000, as OpenCV)\n"
-    "  --budget-ms T         time budget of cv::essential in milliseconds: the search then\n"
-    "                        stops when the budget is spent (or, on easy data, once it is\n"
-    "                        1 - 1e-12 confident; no iteration cap unless --max-iters is\n"
-    "                        given); OpenCV has no budget\n"
-    "  --descriptor D        front-end descriptor: brief (upright, default), orb (rBRIEF)\n"
-    "                        or patch (normalised 8 x 8 grey patch)\n"
-    "  --sampler S           how cv::essential draws samples: uniform (default, the module's\n"
-    "                        own: uniform until the confidence cap, then local and uniform in\n"
-    "                        turn for the rest of OpenCV's time), prosac (the matches handed\n"
-    "                        over sorted by descriptor distance, best first), napsac (all\n"
-    "                        samples local) or pnapsac (local and uniform in turn); OpenCV\n"
-    "                        always gets the matches in their random order\n"
-    "  --json                print the results as one JSON object instead of text\n"
-    "  --draw OUT.png        write both images side by side: inlier matches green, outliers\n"
-    "                        red (a sample of at most 200), epipolar lines of 8 inliers in\n"
-    "                        both images in other colours\n"
-    "\n"
-    "exit status: 0 pose found, 1 input error, 2 usage error, 3 no essential matrix found\n";
-
-cv::Matx33d cameraFromValues(double fx, double fy, double cx, double cy)
+std::string usage()
 {
-    return cv::Matx33d(fx, 0, cx, 0, fy, cy, 0, 0, 1);
-}
-
-void checkCamera(const cv::Matx33d& K, const std::string& origin)
-{
-    for (int i = 0; i < 9; ++i)
-        if (!std::isfinite(K.val[i])) fail("malformed camera (" + origin + "): non-finite value");
-    if (!(K(0, 0) > 0.0) || !(K(1, 1) > 0.0))
-        fail("malformed camera (" + origin + "): fx and fy must be positive");
-    if (K(2, 0) != 0.0 || K(2, 1) != 0.0 || K(2, 2) != 1.0)
-        fail("malformed camera (" + origin + "): the last row of the matrix must be 0 0 1");
-}
-
-// --camera fx,fy,cx,cy
-cv::Matx33d parseCameraOption(const std::string& text)
-{
-    const std::vector<std::string> parts = split(text, ',');
-    double v[4];
-    if (parts.size() != 4)
-        fail("malformed camera '" + text + "': expected --camera fx,fy,cx,cy (four numbers)", 2);
-    for (int i = 0; i < 4; ++i)
-        if (!parseDouble(parts[i], v[i]))
-            fail("malformed camera '" + text + "': '" + parts[i] + "' is not a number", 2);
-    const cv::Matx33d K = cameraFromValues(v[0], v[1], v[2], v[3]);
-    checkCamera(K, "--camera " + text);
-    return K;
-}
-
-// --camera-file F: `fx fy cx cy [width height]` on one line, or a 3 x 3 matrix on three lines.
-// Blank lines and lines starting with '#' are ignored.
-cv::Matx33d readCameraFile(const std::string& path, cv::Size& imageSize)
-{
-    std::ifstream file(path);
-    if (!file) fail("cannot open camera file '" + path + "'");
-
-    const std::vector<std::vector<double>> rows =
-        readNumberRows(file, "malformed camera file '" + path + "'");
-
-    cv::Matx33d K;
-    imageSize = cv::Size();
-    if (rows.size() == 1 && (rows[0].size() == 4 || rows[0].size() == 6)) {
-        const std::vector<double>& r = rows[0];
-        K = cameraFromValues(r[0], r[1], r[2], r[3]);
-        if (r.size() == 6) {
-            if (r[4] < 1 || r[5] < 1 || r[4] != std::floor(r[4]) || r[5] != std::floor(r[5]))
-                fail("malformed camera file '" + path +
-                     "': width and height must be positive "
-                     "integers");
-            imageSize = cv::Size(static_cast<int>(r[4]), static_cast<int>(r[5]));
-        }
-    } else if (rows.size() == 3 && rows[0].size() == 3 && rows[1].size() == 3 &&
-               rows[2].size() == 3) {
-        for (int i = 0; i < 3; ++i)
-            for (int j = 0; j < 3; ++j)
-                K(i, j) = rows[i][j];
-    } else {
-        fail("malformed camera file '" + path +
-             "': expected one line `fx fy cx cy [width height]` or three lines of three numbers");
-    }
-    checkCamera(K, path);
-    return K;
+    return "usage: essential_pair IMG1 IMG2 CAMERA [options]\n"
+           "       essential_pair --matches FILE [IMG1 IMG2] CAMERA [options]\n"
+           "  CAMERA: --camera fx,fy,cx,cy [--distortion k1,k2,p1,p2[,k3...]]\n"
+           "        | --camera-file FILE\n"
+           "\n"
+           "The relative pose of two views taken by one calibrated camera, by cv::essential and\n"
+           "(for comparison) by cv::findEssentialMat + cv::recoverPose on the same matches.\n"
+           "\n"
+           "input:\n"
+           "  IMG1 IMG2              two images (any format OpenCV reads: JPEG, PNG, ...); the\n"
+           "                         sample front end matches them (FAST-9 pyramid + BRIEF)\n"
+           "  --matches FILE         correspondences of any front end instead, in pixels: CSV,\n"
+           "                         one `x1,y1,x2,y2` per line (optional header line\n"
+           "                         x1,y1,x2,y2; '#' comments), or an OpenCV FileStorage file\n"
+           "                         (.yml/.yaml/.json/.xml) with two N x 2 matrices points1 and\n"
+           "                         points2. Images, if given, are then only drawn (--draw)\n"
+           "  --camera fx,fy,cx,cy   intrinsics of both views, in pixels\n"
+           "  --camera-file FILE     OpenCV FileStorage (.yml/.yaml/.json/.xml) as written after\n"
+           "                         cv::calibrateCamera: camera_matrix (or K) and optionally\n"
+           "                         distortion_coefficients (or D), image_width, image_height;\n"
+           "                         or text: `fx fy cx cy [width height]` on one line, or the\n"
+           "                         3 x 3 camera matrix as three lines of three numbers; or\n"
+           "                         KITTI's calib.txt (P0)\n"
+           "  --distortion LIST      distortion coefficients k1,k2,p1,p2[,k3[,k4,k5,k6[,...]]]\n"
+           "                         (4, 5, 8, 12 or 14, OpenCV's model); the points are\n"
+           "                         undistorted (cv::undistortPoints) before both estimators\n"
+           "\n"
+           "front end (images only):\n" +
+           essential_samples::frontEndHelp() + "\n" + essential_samples::estimatorHelp(false) +
+           "\n"
+           "output:\n"
+           "  --no-opencv            skip the comparison run with cv::findEssentialMat\n"
+           "  --json                 print the results as one JSON object instead of text\n"
+           "  --output FILE          write E, R, t, the inlier mask (N x 1, 1 = inlier, in the\n"
+           "                         order of the matches), the inlier count and the camera\n"
+           "                         matrix to an OpenCV FileStorage file; the format follows the\n"
+           "                         extension: .yml, .yaml, .json or .xml\n"
+           "  --draw OUT.png         write both images side by side: inlier matches green,\n"
+           "                         outliers red (a sample of at most 200), epipolar lines of 8\n"
+           "                         inliers in both images in other colours\n"
+           "  -h, --help             this help\n"
+           "\n"
+           "exit status: 0 pose found, 1 input error, 2 usage error, 3 no essential matrix found\n";
 }
 
 cv::Mat readImage(const std::string& path)
@@ -158,100 +106,88 @@ cv::Mat readImage(const std::string& path)
 struct Options
 {
     std::string image1, image2;
-    std::string camera, cameraFile;
-    std::string solver = cv::essential::EssentialParams().solver;
-    double threshold = cv::essential::EssentialParams().threshold;
-    std::uint64_t seed = cv::essential::EssentialParams().seed;
-    double keep = essential_samples::FrontEndParams().keepFraction;
-    int maxIters = cv::essential::EssentialParams().maxIterations;
-    bool maxItersGiven = false;
-    double budgetMs = 0;
-    essential_samples::Descriptor descriptor = essential_samples::FrontEndParams().descriptor;
-    /** The module's default (uniform, with local samples past the confidence cap). PROSAC on the
-    descriptor order is an option, not the default: on the front end's best 20% of the rail
-    matches it took twice the time and got one pose of 54 wrong where uniform got none
-    (docs/HARD_PAIRS.md). */
-    cv::SamplingMethod sampler = cv::SAMPLING_UNIFORM;
+    std::string camera, cameraFile, distortion;
+    std::string matchesFile;
+    essential_samples::FrontEndOptions frontEnd;
+    essential_samples::EstimatorOptions estimator;
+    bool opencv = true;
     bool json = false;
     std::string draw;
+    std::string output;
 };
 
 Options parseOptions(int argc, char** argv)
 {
-    Options options;
-    std::vector<std::string> positional;
-    for (int i = 1; i < argc; ++i) {
-        std::string arg = argv[i];
-        if (arg == "-h" || arg == "--help") {
-            std::cout << kUsage;
-            std::exit(0);
-        }
-        if (arg == "--json") {
-            options.json = true;
-            continue;
-        }
-        if (!isOption(arg)) {
-            positional.push_back(arg);
-            continue;
-        }
-        const std::string value = optionValue(arg, i, argc, argv);
+    std::vector<essential_samples::OptionSpec> specs = essential_samples::estimatorOptionSpecs();
+    for (const essential_samples::OptionSpec& spec : essential_samples::frontEndOptionSpecs())
+        specs.push_back(spec);
+    const std::vector<essential_samples::OptionSpec> own = {
+        {"camera", true, ""},  {"camera-file", true, ""}, {"distortion", true, ""},
+        {"matches", true, ""}, {"no-opencv", false, ""},  {"json", false, ""},
+        {"output", true, ""},  {"draw", true, ""}};
+    specs.insert(specs.end(), own.begin(), own.end());
+    const essential_samples::CommandLine line =
+        essential_samples::parseCommandLine("essential_pair", argc, argv, specs);
+    if (line.help) {
+        std::cout << usage();
+        std::exit(0);
+    }
 
-        if (arg == "--camera") {
+    Options options;
+    bool frontEndGiven = false;
+    for (const essential_samples::GivenOption& option : line.options) {
+        const std::string& value = option.value;
+        if (essential_samples::applyEstimatorOption(option, false, options.estimator)) continue;
+        if (essential_samples::applyFrontEndOption(option, options.frontEnd)) {
+            frontEndGiven = true;
+            continue;
+        }
+        if (option.name == "camera") {
             options.camera = value;
-        } else if (arg == "--camera-file") {
+        } else if (option.name == "camera-file") {
             options.cameraFile = value;
-        } else if (arg == "--solver") {
-            options.solver = value;
-        } else if (arg == "--threshold") {
-            if (!parseDouble(value, options.threshold) || !(options.threshold > 0.0))
-                fail("--threshold must be a positive number of pixels, not '" + value + "'", 2);
-        } else if (arg == "--seed") {
-            if (!parseSeed(value, options.seed))
-                fail("--seed must be a non-negative integer, not '" + value + "'", 2);
-        } else if (arg == "--keep") {
-            if (!parseDouble(value, options.keep) || !(options.keep > 0.0 && options.keep <= 1.0))
-                fail("--keep must be a fraction in (0, 1], not '" + value + "'", 2);
-        } else if (arg == "--max-iters") {
-            long long iters;
-            if (!parseInt(value, iters) || iters < 1 || iters > 100000000)
-                fail("--max-iters must be a positive integer, not '" + value + "'", 2);
-            options.maxIters = static_cast<int>(iters);
-            options.maxItersGiven = true;
-        } else if (arg == "--budget-ms") {
-            if (!parseDouble(value, options.budgetMs) || !(options.budgetMs > 0.0))
-                fail("--budget-ms must be a positive number of milliseconds, not '" + value + "'",
+        } else if (option.name == "distortion") {
+            options.distortion = value;
+        } else if (option.name == "matches") {
+            if (value.empty()) fail("--matches needs a file name", 2);
+            options.matchesFile = value;
+        } else if (option.name == "no-opencv") {
+            options.opencv = false;
+        } else if (option.name == "json") {
+            options.json = true;
+        } else if (option.name == "output") {
+            if (!essential_samples::isFileStoragePath(value))
+                fail("--output '" + value + "': the name must end in .yml, .yaml, .json or .xml",
                      2);
-        } else if (arg == "--descriptor") {
-            if (!essential_samples::parseDescriptor(value, options.descriptor))
-                fail("--descriptor must be brief, orb or patch, not '" + value + "'", 2);
-        } else if (arg == "--sampler") {
-            if (!essential_samples::parseSampler(value, options.sampler))
-                fail("--sampler must be prosac, uniform, napsac or pnapsac, not '" + value + "'",
-                     2);
-        } else if (arg == "--draw") {
+            options.output = value;
+        } else if (option.name == "draw") {
             if (value.empty()) fail("--draw needs an output file name", 2);
             options.draw = value;
-        } else {
-            fail("unknown option '" + arg + "' (see --help)", 2);
         }
     }
 
-    if (positional.size() != 2)
-        fail("expected two images, got " + std::to_string(positional.size()) + " (see --help)", 2);
-    options.image1 = positional[0];
-    options.image2 = positional[1];
-    if (options.camera.empty() == options.cameraFile.empty())
-        fail(options.camera.empty() ? "missing camera: give --camera fx,fy,cx,cy or --camera-file F"
-                                    : "give only one of --camera and --camera-file",
+    const size_t images = line.positional.size();
+    if (options.matchesFile.empty() && images != 2)
+        fail("expected two images, got " + std::to_string(images) + " (see --help)", 2);
+    if (!options.matchesFile.empty() && images != 0 && images != 2)
+        fail("with --matches, give two images (for --draw) or none, not " + std::to_string(images),
              2);
-
-    // createSolver accepts registered names and composites ("gn+nister"); its message lists the
-    // registered solvers.
-    try {
-        cv::essential::createSolver(options.solver);
-    } catch (const cv::Exception& e) {
-        fail(e.err, 2);
+    if (images == 2) {
+        options.image1 = line.positional[0];
+        options.image2 = line.positional[1];
     }
+    if (!options.matchesFile.empty() && frontEndGiven)
+        fail("--descriptor, --matcher and --keep-fraction are front-end options; with --matches "
+             "there is no front end",
+             2);
+    if (!options.draw.empty() && options.image1.empty())
+        fail("--draw needs the two images (give IMG1 IMG2 with --matches)", 2);
+    essential_samples::checkEstimatorCombination(options.estimator);
+    if (options.camera.empty() == options.cameraFile.empty())
+        fail(options.camera.empty()
+                 ? "missing camera: give --camera fx,fy,cx,cy or --camera-file FILE"
+                 : "give only one of --camera and --camera-file",
+             2);
     return options;
 }
 
@@ -395,67 +331,109 @@ void drawResult(const std::string& path, const cv::Mat& image1, const cv::Mat& i
     if (!written) fail("cannot write '" + path + "' (unknown extension or unwritable path)");
 }
 
+// The inlier mask, estimate and camera as an OpenCV FileStorage file (format by extension).
+void writeOutput(const std::string& path, const cv::Matx33d& K, const cv::Mat& distortion,
+                 const cv::essential::EssentialReport& report, bool found, const cv::Mat& mask,
+                 int n)
+{
+    cv::FileStorage fs;
+    try {
+        fs.open(path, cv::FileStorage::WRITE);
+    } catch (const cv::Exception& e) {
+        fail("cannot write '" + path + "': " + e.err);
+    }
+    if (!fs.isOpened()) fail("cannot write '" + path + "'");
+    fs << "found" << int(found);
+    fs << "pose_recovered" << int(found && report.poseRecovered);
+    fs << "matches" << n;
+    fs << "inliers" << (found ? report.inliers : 0);
+    fs << "camera_matrix" << cv::Mat(K);
+    if (!distortion.empty()) fs << "distortion_coefficients" << distortion;
+    if (found) fs << "E" << cv::Mat(report.E);
+    if (found && report.poseRecovered) {
+        fs << "R" << cv::Mat(report.R);
+        fs << "t" << cv::Mat(report.t);
+    }
+    fs << "mask" << (mask.empty() ? cv::Mat::zeros(n, 1, CV_8U) : mask.reshape(1, n));
+    fs.release();
+}
+
 int run(int argc, char** argv)
 {
     const Options options = parseOptions(argc, argv);
 
-    cv::Size cameraImageSize;
-    const cv::Matx33d K = options.camera.empty()
-                              ? readCameraFile(options.cameraFile, cameraImageSize)
-                              : parseCameraOption(options.camera);
-    const cv::Mat image1 = readImage(options.image1);
-    const cv::Mat image2 = readImage(options.image2);
+    essential_samples::Camera camera;
+    if (options.camera.empty())
+        camera = essential_samples::readCameraFile(options.cameraFile);
+    else
+        camera.K = essential_samples::parseCameraOption(options.camera);
+    if (!options.distortion.empty()) {
+        if (!camera.distortion.empty())
+            fail("--distortion: the camera file '" + options.cameraFile +
+                     "' has distortion coefficients already",
+                 2);
+        camera.distortion = essential_samples::parseDistortionOption(options.distortion);
+    }
+    const cv::Matx33d K = camera.K;
+    const bool haveImages = !options.image1.empty();
+    cv::Mat image1, image2;
+    if (haveImages) {
+        image1 = readImage(options.image1);
+        image2 = readImage(options.image2);
+    }
     // Different image sizes are fine for the estimator (one camera matrix, pixel coordinates);
     // what matters is that the camera file, when it states a size, is for these images.
     std::vector<std::string> warnings;
-    if (cameraImageSize.area() > 0 &&
-        (image1.size() != cameraImageSize || image2.size() != cameraImageSize))
-        warnings.push_back("the camera file is for " + std::to_string(cameraImageSize.width) +
-                           " x " + std::to_string(cameraImageSize.height) + " images");
-    if (image1.size() != image2.size())
+    if (haveImages && camera.imageSize.area() > 0 &&
+        (image1.size() != camera.imageSize || image2.size() != camera.imageSize))
+        warnings.push_back("the camera file is for " + std::to_string(camera.imageSize.width) +
+                           " x " + std::to_string(camera.imageSize.height) + " images");
+    if (haveImages && image1.size() != image2.size())
         warnings.push_back("the images differ in size; one camera matrix is used for both");
     for (const std::string& warning : warnings)
         std::cerr << "essential_pair: warning: " << warning << "\n";
 
-    // Front end.
-    essential_samples::FrontEndParams frontParams;
-    frontParams.keepFraction = options.keep;
-    frontParams.descriptor = options.descriptor;
+    // Front end, or the matches of the file.
+    const essential_samples::FrontEndParams& frontParams = options.frontEnd;
+    essential_samples::Features features1, features2;
+    essential_samples::Matches matches;
+    double timeFeatures1 = 0, timeFeatures2 = 0, timeMatching = 0;
     auto start = std::chrono::steady_clock::now();
-    const essential_samples::Features features1 =
-        essential_samples::detectAndDescribe(image1, frontParams);
-    const double timeFeatures1 = elapsedMs(start);
-    start = std::chrono::steady_clock::now();
-    const essential_samples::Features features2 =
-        essential_samples::detectAndDescribe(image2, frontParams);
-    const double timeFeatures2 = elapsedMs(start);
-    start = std::chrono::steady_clock::now();
-    const essential_samples::Matches matches =
-        essential_samples::matchFeatures(features1, features2, frontParams);
-    const double timeMatching = elapsedMs(start);
+    if (options.matchesFile.empty()) {
+        features1 = essential_samples::detectAndDescribe(image1, frontParams);
+        timeFeatures1 = elapsedMs(start);
+        start = std::chrono::steady_clock::now();
+        features2 = essential_samples::detectAndDescribe(image2, frontParams);
+        timeFeatures2 = elapsedMs(start);
+        start = std::chrono::steady_clock::now();
+        matches = essential_samples::matchFeatures(features1, features2, frontParams);
+        timeMatching = elapsedMs(start);
+    } else {
+        essential_samples::readMatchesFile(options.matchesFile, matches.points1, matches.points2);
+        matches.candidates = static_cast<int>(matches.points1.size());
+    }
     const int n = static_cast<int>(matches.points1.size());
     if (n < 5) fail("only " + std::to_string(n) + " matches; at least 5 are needed");
+    if (!camera.distortion.empty()) {
+        // Both estimators then see the points of an ideal camera K.
+        cv::undistortPoints(std::vector<cv::Point2f>(matches.points1), matches.points1, K,
+                            camera.distortion, cv::noArray(), K);
+        cv::undistortPoints(std::vector<cv::Point2f>(matches.points2), matches.points2, K,
+                            camera.distortion, cv::noArray(), K);
+    }
 
     // cv::essential.
-    cv::essential::EssentialParams params;
-    params.solver = options.solver;
-    params.threshold = options.threshold;
-    params.seed = options.seed;
-    params.maxIterations = options.maxIters;
-    if (options.budgetMs > 0) {
-        // The budget, not the confidence or (unless given) the cap, ends the search.
-        params.timeBudgetMs = options.budgetMs;
-        params.confidence = 1.0 - 1e-12;
-        if (!options.maxItersGiven) params.maxIterations = 100000000;
-    }
-    params.sampler = options.sampler;
+    const essential_samples::EstimatorOptions& estimator = options.estimator;
+    const double budgetMs = estimator.budgetsMs.front();
+    const cv::essential::EssentialParams params =
+        essential_samples::estimatorParams(estimator, estimator.solvers.front(), budgetMs);
     cv::essential::EssentialReport report;
     cv::Mat mask;
     start = std::chrono::steady_clock::now();
     cv::Mat E;
-    if (options.sampler == cv::SAMPLING_PROSAC) {
+    if (estimator.sampler == cv::SAMPLING_PROSAC && !matches.distances.empty()) {
         // PROSAC reads the order as quality: hand the matches over best first, and put the mask
-        // back in the matches' order.
+        // back in the matches' order. (A matches file is taken in its own order.)
         const std::vector<int> order = essential_samples::orderByDistance(matches.distances);
         cv::Mat sortedMask;
         E = cv::essential::findEssentialMatIter(essential_samples::permuted(matches.points1, order),
@@ -483,22 +461,28 @@ int run(int argc, char** argv)
                 ? "no parallax, the translation direction is undetermined"
                 : "a planar scene, two poses fit and this one may be the wrong one");
     if (!degenerateNote.empty()) std::cerr << "essential_pair: warning: " << degenerateNote << "\n";
+    if (!options.output.empty())
+        writeOutput(options.output, K, camera.distortion, report, found, mask, n);
 
     // OpenCV on the same matches.
-    cv::Mat cvMask;
-    start = std::chrono::steady_clock::now();
-    const cv::Mat cvE = cv::findEssentialMat(matches.points1, matches.points2, K, cv::RANSAC, 0.999,
-                                             options.threshold, options.maxIters, cvMask);
-    const double timeCvEssential = elapsedMs(start);
-    const int cvInliers = cvMask.empty() ? 0 : cv::countNonZero(cvMask);
-    cv::Mat cvR, cvT;
-    int cvInFront = 0;
-    double timeCvPose = 0.0;
-    const bool cvFound = cvE.rows == 3 && cvE.cols == 3;
-    if (cvFound) {
+    const int cvMethod = essential_samples::opencvMethod(estimator);
+    const char* cvMethodName = cvMethod == cv::LMEDS ? "LMEDS" : "RANSAC";
+    cv::Mat cvMask, cvE, cvR, cvT;
+    double timeCvEssential = 0.0, timeCvPose = 0.0;
+    int cvInliers = 0, cvInFront = 0;
+    bool cvFound = false;
+    if (options.opencv) {
         start = std::chrono::steady_clock::now();
-        cvInFront = cv::recoverPose(cvE, matches.points1, matches.points2, K, cvR, cvT, cvMask);
-        timeCvPose = elapsedMs(start);
+        cvE = cv::findEssentialMat(matches.points1, matches.points2, K, cvMethod, 0.999,
+                                   estimator.thresholdPx, estimator.maxIterations, cvMask);
+        timeCvEssential = elapsedMs(start);
+        cvInliers = cvMask.empty() ? 0 : cv::countNonZero(cvMask);
+        cvFound = cvE.rows == 3 && cvE.cols == 3;
+        if (cvFound) {
+            start = std::chrono::steady_clock::now();
+            cvInFront = cv::recoverPose(cvE, matches.points1, matches.points2, K, cvR, cvT, cvMask);
+            timeCvPose = elapsedMs(start);
+        }
     }
     const bool compared = found && report.poseRecovered && cvFound;
     const double rotationDiff = compared ? rotationAngleDeg(report.R, cv::Matx33d(cvR)) : 0.0;
@@ -508,44 +492,60 @@ int run(int argc, char** argv)
     if (!options.draw.empty())
         drawResult(options.draw, image1, image2, matches, mask, K, report.E, found);
 
+    const bool fromFile = !options.matchesFile.empty();
     const char* distanceName =
         features1.descriptor == essential_samples::Descriptor::Patch ? "L2" : "Hamming";
     const std::string budgetNote =
-        options.budgetMs > 0
-            ? "time budget " + cv::format("%g", options.budgetMs) +
+        budgetMs > 0
+            ? "time budget " + cv::format("%g", budgetMs) +
                   " ms: the search stops when the budget is spent or at confidence 1 - 1e-12 (" +
-                  (options.maxItersGiven ? "cap --max-iters" : "no iteration cap") + ")"
+                  (estimator.maxIterationsGiven ? "cap --max-iterations" : "no iteration cap") + ")"
             : std::string("no time budget: the search stops at confidence 0.999 or at its cap, the "
-                          "samples that fit in 3/4 of OpenCV's time for --max-iters iterations "
-                          "(local and uniform samples in turn past the confidence cap)");
+                          "samples that fit in 3/4 of OpenCV's time for --max-iterations "
+                          "iterations (local and uniform samples in turn past the confidence "
+                          "cap)");
     const std::string planeNote =
         report.planeParallaxKept
             ? "plane check: the winner's inliers were dominated by a plane; a model fixed by "
               "the points off it had clearly more support and replaced it"
             : "plane check: the winner was kept";
+    const std::string methodName = estimator.lmeds ? "lmeds" : "ransac";
 
     if (options.json) {
         nlohmann::json out;
-        out["images"] = {
-            {{"path", options.image1}, {"width", image1.cols}, {"height", image1.rows}},
-            {{"path", options.image2}, {"width", image2.cols}, {"height", image2.rows}}};
+        nlohmann::json images = nlohmann::json::array();
+        if (haveImages)
+            images = {{{"path", options.image1}, {"width", image1.cols}, {"height", image1.rows}},
+                      {{"path", options.image2}, {"width", image2.cols}, {"height", image2.rows}}};
+        out["images"] = images;
         out["camera"] = {{"fx", K(0, 0)}, {"fy", K(1, 1)}, {"cx", K(0, 2)}, {"cy", K(1, 2)}};
+        std::vector<double> distortion;
+        for (int i = 0; i < camera.distortion.cols; ++i)
+            distortion.push_back(camera.distortion.at<double>(i));
+        out["camera"]["distortion"] = distortion;
         out["warnings"] = warnings;
-        out["frontend"] = {{"detector", "FAST-9 pyramid"},
-                           {"levels", features1.levels},
-                           {"descriptor", essential_samples::descriptorName(features1.descriptor)},
-                           {"corners", {features1.keypoints.size(), features2.keypoints.size()}},
-                           {"candidates", matches.candidates},
-                           {"keep_fraction", options.keep},
-                           {"matches", n},
-                           {"max_distance", matches.maxDistance}};
+        if (fromFile)
+            out["frontend"] = {{"matches_file", options.matchesFile}, {"matches", n}};
+        else
+            out["frontend"] = {
+                {"detector", "FAST-9 pyramid"},
+                {"levels", features1.levels},
+                {"descriptor", essential_samples::descriptorName(features1.descriptor)},
+                {"matcher", essential_samples::matcherName(frontParams.matcher)},
+                {"corners", {features1.keypoints.size(), features2.keypoints.size()}},
+                {"candidates", matches.candidates},
+                {"keep_fraction", frontParams.keepFraction},
+                {"matches", n},
+                {"max_distance", matches.maxDistance}};
         nlohmann::json ours = {{"solver", params.solver},
-                               {"sampler", essential_samples::samplerName(params.sampler)},
+                               {"engine", essential_samples::engineName(estimator.engine)},
+                               {"method", methodName},
+                               {"sampler", essential_samples::samplerName(estimator.sampler)},
                                {"threshold_px", params.threshold},
                                {"seed", params.seed},
-                               {"max_iters", params.maxIterations},
+                               {"max_iterations", estimator.maxIterations},
                                {"confidence", params.confidence},
-                               {"budget_ms", options.budgetMs},
+                               {"budget_ms", budgetMs},
                                {"stopping", budgetNote},
                                {"found", found},
                                {"pose_recovered", found && report.poseRecovered},
@@ -567,21 +567,25 @@ int run(int argc, char** argv)
             ours["t"] = vectorJson(report.t);
         }
         out["essential"] = ours;
-        nlohmann::json reference = {{"method", "RANSAC"},
-                                    {"confidence", 0.999},
-                                    {"threshold_px", options.threshold},
-                                    {"max_iters", options.maxIters},
-                                    {"found", cvFound},
-                                    {"inliers", cvInliers},
-                                    {"inlier_ratio", n > 0 ? double(cvInliers) / n : 0.0},
-                                    {"points_in_front", cvInFront}};
-        if (cvFound) {
-            const cv::Mat cvEn = cvE / cv::norm(cvE); // unit norm, as ours
-            reference["E"] = matrixJson(cv::Matx33d(cvEn));
-            reference["R"] = matrixJson(cv::Matx33d(cvR));
-            reference["t"] = vectorJson(cv::Vec3d(cvT));
+        if (options.opencv) {
+            nlohmann::json reference = {{"method", cvMethodName},
+                                        {"confidence", 0.999},
+                                        {"threshold_px", estimator.thresholdPx},
+                                        {"max_iterations", estimator.maxIterations},
+                                        {"found", cvFound},
+                                        {"inliers", cvInliers},
+                                        {"inlier_ratio", n > 0 ? double(cvInliers) / n : 0.0},
+                                        {"points_in_front", cvInFront}};
+            if (cvFound) {
+                const cv::Mat cvEn = cvE / cv::norm(cvE); // unit norm, as ours
+                reference["E"] = matrixJson(cv::Matx33d(cvEn));
+                reference["R"] = matrixJson(cv::Matx33d(cvR));
+                reference["t"] = vectorJson(cv::Vec3d(cvT));
+            }
+            out["opencv"] = reference;
+        } else {
+            out["opencv"] = nullptr;
         }
-        out["opencv"] = reference;
         out["difference"] = compared
                                 ? nlohmann::json{{"rotation_deg", rotationDiff},
                                                  {"translation_direction_deg", translationDiff}}
@@ -602,23 +606,34 @@ int run(int argc, char** argv)
                              {"findEssentialMat", timeCvEssential},
                              {"recoverPose", timeCvPose}}}};
         if (!options.draw.empty()) out["drawing"] = options.draw;
+        if (!options.output.empty()) out["output"] = options.output;
         std::cout << out.dump(2) << "\n";
         return found ? 0 : 3;
     }
 
-    std::printf("images: %s (%d x %d), %s (%d x %d)\n", options.image1.c_str(), image1.cols,
-                image1.rows, options.image2.c_str(), image2.cols, image2.rows);
-    std::printf("camera: fx %.3f, fy %.3f, cx %.3f, cy %.3f\n", K(0, 0), K(1, 1), K(0, 2), K(1, 2));
-    std::printf("corners: %zu in image 1, %zu in image 2 (FAST-9 on %d pyramid levels, %s)\n",
-                features1.keypoints.size(), features2.keypoints.size(), features1.levels,
-                essential_samples::descriptorName(features1.descriptor));
-    std::printf("matches: %d (best %.0f%% of %d by %s distance, up to %g)\n", n,
-                100.0 * options.keep, matches.candidates, distanceName,
-                static_cast<double>(matches.maxDistance));
+    if (haveImages)
+        std::printf("images: %s (%d x %d), %s (%d x %d)\n", options.image1.c_str(), image1.cols,
+                    image1.rows, options.image2.c_str(), image2.cols, image2.rows);
+    std::printf("camera: fx %.3f, fy %.3f, cx %.3f, cy %.3f", K(0, 0), K(1, 1), K(0, 2), K(1, 2));
+    std::printf(camera.distortion.empty() ? "\n"
+                                          : ", %d distortion coefficients (points undistorted)\n",
+                camera.distortion.cols);
+    if (fromFile) {
+        std::printf("matches: %d from %s\n", n, options.matchesFile.c_str());
+    } else {
+        std::printf("corners: %zu in image 1, %zu in image 2 (FAST-9 on %d pyramid levels, %s)\n",
+                    features1.keypoints.size(), features2.keypoints.size(), features1.levels,
+                    essential_samples::descriptorName(features1.descriptor));
+        std::printf("matches: %d (best %.0f%% of %d by %s distance, up to %g; matcher %s)\n", n,
+                    100.0 * frontParams.keepFraction, matches.candidates, distanceName,
+                    static_cast<double>(matches.maxDistance),
+                    essential_samples::matcherName(frontParams.matcher));
+    }
 
-    std::printf("\ncv::essential::findEssentialMatIter (solver %s, sampler %s, threshold %g px, "
-                "seed 0x%llx)\n",
-                params.solver.c_str(), essential_samples::samplerName(params.sampler),
+    std::printf("\ncv::essential::findEssentialMatIter (solver %s, engine %s, method %s, sampler "
+                "%s, threshold %g px, seed 0x%llx)\n",
+                params.solver.c_str(), essential_samples::engineName(estimator.engine),
+                methodName.c_str(), essential_samples::samplerName(estimator.sampler),
                 params.threshold, static_cast<unsigned long long>(params.seed));
     std::printf("%s\n%s\n", budgetNote.c_str(), planeNote.c_str());
     if (found) {
@@ -640,31 +655,36 @@ int run(int argc, char** argv)
                 report.hypothesesGenerated, report.hypothesesConverged, report.hypothesesScored,
                 report.iterations, report.refineIterations);
 
-    std::printf("\ncv::findEssentialMat + cv::recoverPose (RANSAC, prob 0.999, threshold %g px)\n",
-                options.threshold);
-    if (cvFound) {
-        std::printf("E =\n%s", formatMatrix(cvE / cv::norm(cvE)).c_str());
-        std::printf("R =\n%s", formatMatrix(cvR).c_str());
-        std::printf("t =\n%s", formatMatrix(cvT.t()).c_str());
-    } else {
-        std::printf("no essential matrix found\n");
+    if (options.opencv) {
+        std::printf("\ncv::findEssentialMat + cv::recoverPose (%s, prob 0.999, threshold %g px)\n",
+                    cvMethodName, estimator.thresholdPx);
+        if (cvFound) {
+            std::printf("E =\n%s", formatMatrix(cvE / cv::norm(cvE)).c_str());
+            std::printf("R =\n%s", formatMatrix(cvR).c_str());
+            std::printf("t =\n%s", formatMatrix(cvT.t()).c_str());
+        } else {
+            std::printf("no essential matrix found\n");
+        }
+        std::printf("inliers: %d of %d (%.1f%%), %d in front of both cameras\n", cvInliers, n,
+                    percent(cvInliers, n), cvInFront);
+        if (compared)
+            std::printf("difference: rotation %.3f deg, translation direction %.3f deg\n",
+                        rotationDiff, translationDiff);
     }
-    std::printf("inliers: %d of %d (%.1f%%), %d in front of both cameras\n", cvInliers, n,
-                percent(cvInliers, n), cvInFront);
-    if (compared)
-        std::printf("difference: rotation %.3f deg, translation direction %.3f deg\n", rotationDiff,
-                    translationDiff);
 
     std::printf("\ntimes (ms):\n");
-    std::printf("  front end        %9.2f  (image 1 %.2f, image 2 %.2f, matching %.2f)\n",
-                timeFeatures1 + timeFeatures2 + timeMatching, timeFeatures1, timeFeatures2,
-                timeMatching);
+    if (!fromFile)
+        std::printf("  front end        %9.2f  (image 1 %.2f, image 2 %.2f, matching %.2f)\n",
+                    timeFeatures1 + timeFeatures2 + timeMatching, timeFeatures1, timeFeatures2,
+                    timeMatching);
     std::printf("  cv::essential    %9.2f  (setup %.2f, search %.2f, refine %.2f, pose %.2f)\n",
                 timeEssential, report.timeSetupMs, report.timeSearchMs, report.timeRefineMs,
                 report.timePoseMs);
-    std::printf("  OpenCV           %9.2f  (findEssentialMat %.2f, recoverPose %.2f)\n",
-                timeCvEssential + timeCvPose, timeCvEssential, timeCvPose);
+    if (options.opencv)
+        std::printf("  OpenCV           %9.2f  (findEssentialMat %.2f, recoverPose %.2f)\n",
+                    timeCvEssential + timeCvPose, timeCvEssential, timeCvPose);
     if (!options.draw.empty()) std::printf("\ndrawing: %s\n", options.draw.c_str());
+    if (!options.output.empty()) std::printf("output: %s\n", options.output.c_str());
     return found ? 0 : 3;
 }
 

@@ -4,10 +4,16 @@
 // essential_sequence: relative poses of frame pairs (t - N, t) of an image sequence. The sample
 // front end (features cached per frame) feeds cv::essential::findEssentialMatIter with each solver
 // and time budget, optionally cv::findEssentialMat + cv::recoverPose as a reference; with ground
-// truth poses a pair is correct when the estimated translation direction is within a threshold of
-// the true one. Writes one CSV row per (pair, solver, budget) and a summary table on stdout.
+// truth poses (rail, TUM or KITTI format) a pair is correct when the estimated translation
+// direction is within a threshold of the true one. Writes one CSV row per (pair, solver, budget)
+// and a summary table on stdout.
 
+#include "cli_camera.hpp"
 #include "cli_common.hpp"
+#include "cli_estimator.hpp"
+#include "cli_frontend_options.hpp"
+#include "cli_parser.hpp"
+#include "cli_sequence_input.hpp"
 #include "frontend/frontend.hpp"
 #include "frontend/sequence_io.hpp"
 
@@ -36,52 +42,66 @@ namespace {
 using essential_samples::directionAngleDeg;
 using essential_samples::elapsedMs;
 using essential_samples::fail;
-using essential_samples::isOption;
-using essential_samples::optionValue;
 using essential_samples::parseDouble;
 using essential_samples::parseInt;
-using essential_samples::parseSeed;
-using essential_samples::parseSolverList;
 using essential_samples::Pose;
-using essential_samples::readNumberRows;
 using essential_samples::rotationAngleDeg;
 using essential_samples::sampsonPx;
 using essential_samples::split;
 
-const char* const kUsage =
-    "usage: essential_sequence DIR [--offsets 1..60 | --offsets 1,5,10] [--solvers gn,nister,...]\n"
-    "                          [--budgets-ms 10,1000] [--threshold-deg 10] [--frames-step K]\n"
-    "                          [--csv OUT.csv] [--opencv] [--descriptor brief|orb|patch]\n"
-    "                          [--threshold PX] [--max-iters N] [--seed S]\n"
-    "                          [--sampler uniform|prosac|napsac|pnapsac]\n"
-    "\n"
-    "DIR holds the frames NNN.jpg (numbered from 0, three or more digits), camera.txt (the 3 x 3\n"
-    "camera matrix, three lines of three numbers) and optionally poses.txt (one line per frame:\n"
-    "`k r00 r01 .. r22 Cx Cy Cz`, world-to-camera rotation and camera centre, as rail-a).\n"
-    "\n"
-    "  --offsets LIST        frame offsets N: numbers and ranges A..B, comma separated\n"
-    "                        (default 1,5,10,20,40,60)\n"
-    "  --solvers LIST        cv::essential solvers or mixes, comma separated (default gn+nister)\n"
-    "  --budgets-ms LIST     time budgets in ms, 0 for none (default 0). With a budget the search\n"
-    "                        stops when the budget is spent or at confidence 1 - 1e-12 (no\n"
-    "                        iteration cap); without, at confidence 0.999 or --max-iters\n"
-    "  --threshold-deg D     a pair is correct when the translation direction is within D\n"
-    "                        degrees of the truth (default 10; needs poses.txt)\n"
-    "  --frames-step K       use every K-th frame t = first, first + K, ... as the later frame\n"
-    "                        of the pairs (default 1: every frame)\n"
-    "  --csv OUT.csv         write one row per (pair, solver, budget)\n"
-    "  --opencv              also run cv::findEssentialMat + cv::recoverPose (RANSAC, prob\n"
-    "                        0.999, --threshold, --max-iters) as a reference row\n"
-    "  --descriptor D        front-end descriptor (default brief)\n"
-    "  --threshold PX        inlier threshold on the Sampson distance, pixels (default 1)\n"
-    "  --max-iters N         iteration cap without a budget (default 1000, as OpenCV)\n"
-    "  --seed S              seed of the estimator (default: the module's)\n"
-    "  --sampler S           how cv::essential draws samples: uniform (default, the module's\n"
-    "                        own, with local samples past the confidence cap), prosac (the\n"
-    "                        matches sorted by descriptor distance, best first), napsac or\n"
-    "                        pnapsac. OpenCV gets the matches in their random order\n"
-    "\n"
-    "exit status: 0 done, 1 input error, 2 usage error\n";
+std::string usage()
+{
+    return "usage: essential_sequence DIR [options]\n"
+           "\n"
+           "Relative poses of the frame pairs (t - N, t) of a sequence by cv::essential (each\n"
+           "solver and time budget), optionally cv::findEssentialMat as a reference; with ground\n"
+           "truth, how often the translation direction is right. One CSV row per estimate\n"
+           "(--csv), a Markdown summary on stdout.\n"
+           "\n"
+           "DIR holds the frames NNN.jpg, NNN.jpeg or NNN.png (numbered by their names, any "
+           "number\n"
+           "of digits), or DIR/rgb.txt lists them (`timestamp path` per line, the TUM RGB-D\n"
+           "layout; numbered 0, 1, ... in that order). Camera: DIR/camera.txt unless --camera or\n"
+           "--camera-file is given (same formats as there). Ground truth (optional): --poses, or\n"
+           "else DIR/poses.txt or DIR/groundtruth.txt, in one of the formats:\n"
+           "  rail   `k r00 r01 .. r22 Cx Cy Cz`: frame k, world-to-camera rotation, camera "
+           "centre\n"
+           "  tum    `timestamp tx ty tz qx qy qz qw`: camera-to-world (TUM RGB-D); a frame gets\n"
+           "         the pose of the nearest timestamp within 0.02 s (needs DIR/rgb.txt)\n"
+           "  kitti  12 numbers per line, the 3 x 4 camera-to-world matrix (KITTI odometry);\n"
+           "         line i is frame i\n"
+           "\n"
+           "pairs and ground truth:\n"
+           "  --offsets LIST         frame offsets N: numbers and ranges A..B, comma separated\n"
+           "                         (default 1,5,10,20,40,60)\n"
+           "  --frames-step K        use every K-th frame t = first, first + K, ... as the later\n"
+           "                         frame of the pairs (default 1: every frame)\n"
+           "  --poses FILE           ground-truth poses (default DIR/poses.txt, else\n"
+           "                         DIR/groundtruth.txt, if present)\n"
+           "  --pose-format F        auto (default: by the values per line, 13 rail, 12 kitti,\n"
+           "                         8 tum), rail, tum or kitti\n"
+           "  --threshold-deg D      a pair is correct when the translation direction is within\n"
+           "                         D degrees of the truth (default 10)\n"
+           "  --camera fx,fy,cx,cy   intrinsics, in pixels (instead of DIR/camera.txt)\n"
+           "  --camera-file FILE     a camera file: OpenCV FileStorage (.yml/.yaml/.json/.xml,\n"
+           "                         camera_matrix or K, distortion_coefficients or D), KITTI's\n"
+           "                         calib.txt (P0) or text (`fx fy cx cy [width height]`, or\n"
+           "                         three lines of three)\n"
+           "  --distortion LIST      distortion coefficients k1,k2,p1,p2[,k3...]; the matches are\n"
+           "                         undistorted before the estimators\n"
+           "\n"
+           "front end:\n" +
+           essential_samples::frontEndHelp() + "\n" + essential_samples::estimatorHelp(true) +
+           "\n"
+           "output:\n"
+           "  --opencv               also run cv::findEssentialMat + cv::recoverPose (--method,\n"
+           "                         prob 0.999, --threshold-px, --max-iterations) as a reference\n"
+           "                         row\n"
+           "  --csv OUT.csv          write one row per (pair, solver, budget)\n"
+           "  -h, --help             this help\n"
+           "\n"
+           "exit status: 0 done, 1 input error, 2 usage error\n";
+}
 
 // "1..60", "1,5,10", "1..5,10": sorted, without repeats; all >= 1.
 std::vector<int> parseOffsets(const std::string& text)
@@ -111,151 +131,78 @@ struct Options
 {
     std::string dir;
     std::vector<int> offsets = {1, 5, 10, 20, 40, 60};
-    std::vector<std::string> solvers = {cv::essential::EssentialParams().solver};
-    std::vector<double> budgets = {0.0};
-    /** The module's default (uniform, with local samples past the confidence cap); PROSAC on the
-    descriptor order is an option (docs/HARD_PAIRS.md: slower, and once wrong, on the best 20%). */
-    cv::SamplingMethod sampler = cv::SAMPLING_UNIFORM;
     double thresholdDeg = 10.0;
     int framesStep = 1;
     std::string csv;
     bool opencv = false;
-    essential_samples::Descriptor descriptor = essential_samples::FrontEndParams().descriptor;
-    double threshold = cv::essential::EssentialParams().threshold;
-    int maxIters = cv::essential::EssentialParams().maxIterations;
-    std::uint64_t seed = cv::essential::EssentialParams().seed;
+    std::string camera, cameraFile, distortion;
+    std::string poses;
+    essential_samples::PoseFormat poseFormat = essential_samples::PoseFormat::Auto;
+    essential_samples::FrontEndOptions frontEnd;
+    essential_samples::EstimatorOptions estimator;
 };
 
 Options parseOptions(int argc, char** argv)
 {
-    Options options;
-    std::vector<std::string> positional;
-    for (int i = 1; i < argc; ++i) {
-        std::string arg = argv[i];
-        if (arg == "-h" || arg == "--help") {
-            std::cout << kUsage;
-            std::exit(0);
-        }
-        if (arg == "--opencv") {
-            options.opencv = true;
-            continue;
-        }
-        if (!isOption(arg)) {
-            positional.push_back(arg);
-            continue;
-        }
-        const std::string value = optionValue(arg, i, argc, argv);
+    std::vector<essential_samples::OptionSpec> specs = essential_samples::estimatorOptionSpecs();
+    for (const essential_samples::OptionSpec& spec : essential_samples::frontEndOptionSpecs())
+        specs.push_back(spec);
+    const std::vector<essential_samples::OptionSpec> own = {
+        {"offsets", true, ""},     {"frames-step", true, ""},   {"poses", true, ""},
+        {"pose-format", true, ""}, {"threshold-deg", true, ""}, {"camera", true, ""},
+        {"camera-file", true, ""}, {"distortion", true, ""},    {"opencv", false, ""},
+        {"csv", true, ""}};
+    specs.insert(specs.end(), own.begin(), own.end());
+    const essential_samples::CommandLine line =
+        essential_samples::parseCommandLine("essential_sequence", argc, argv, specs);
+    if (line.help) {
+        std::cout << usage();
+        std::exit(0);
+    }
 
+    Options options;
+    for (const essential_samples::GivenOption& option : line.options) {
+        const std::string& value = option.value;
+        if (essential_samples::applyEstimatorOption(option, true, options.estimator)) continue;
+        if (essential_samples::applyFrontEndOption(option, options.frontEnd)) continue;
         long long integer = 0;
-        if (arg == "--offsets") {
+        if (option.name == "offsets") {
             options.offsets = parseOffsets(value);
-        } else if (arg == "--solvers") {
-            options.solvers = parseSolverList("--solvers", value);
-        } else if (arg == "--budgets-ms") {
-            options.budgets.clear();
-            for (const std::string& part : split(value, ',')) {
-                double budget;
-                if (!parseDouble(part, budget) || budget < 0)
-                    fail("--budgets-ms: '" + part + "' is not a budget in ms (>= 0)", 2);
-                options.budgets.push_back(budget);
-            }
-        } else if (arg == "--threshold-deg") {
-            if (!parseDouble(value, options.thresholdDeg) || !(options.thresholdDeg > 0))
-                fail("--threshold-deg must be a positive angle, not '" + value + "'", 2);
-        } else if (arg == "--frames-step") {
+        } else if (option.name == "frames-step") {
             if (!parseInt(value, integer) || integer < 1 || integer > 1000000)
                 fail("--frames-step must be a positive integer, not '" + value + "'", 2);
             options.framesStep = static_cast<int>(integer);
-        } else if (arg == "--csv") {
+        } else if (option.name == "poses") {
+            if (value.empty()) fail("--poses needs a file name", 2);
+            options.poses = value;
+        } else if (option.name == "pose-format") {
+            if (!essential_samples::parsePoseFormat(value, options.poseFormat))
+                fail("--pose-format must be auto, rail, tum or kitti, not '" + value + "'", 2);
+        } else if (option.name == "threshold-deg") {
+            if (!parseDouble(value, options.thresholdDeg) || !(options.thresholdDeg > 0))
+                fail("--threshold-deg must be a positive angle, not '" + value + "'", 2);
+        } else if (option.name == "camera") {
+            options.camera = value;
+        } else if (option.name == "camera-file") {
+            options.cameraFile = value;
+        } else if (option.name == "distortion") {
+            options.distortion = value;
+        } else if (option.name == "opencv") {
+            options.opencv = true;
+        } else if (option.name == "csv") {
+            if (value.empty()) fail("--csv needs a file name", 2);
             options.csv = value;
-        } else if (arg == "--descriptor") {
-            if (!essential_samples::parseDescriptor(value, options.descriptor))
-                fail("--descriptor must be brief, orb or patch, not '" + value + "'", 2);
-        } else if (arg == "--threshold") {
-            if (!parseDouble(value, options.threshold) || !(options.threshold > 0))
-                fail("--threshold must be a positive number of pixels, not '" + value + "'", 2);
-        } else if (arg == "--max-iters") {
-            if (!parseInt(value, integer) || integer < 1 || integer > 100000000)
-                fail("--max-iters must be a positive integer, not '" + value + "'", 2);
-            options.maxIters = static_cast<int>(integer);
-        } else if (arg == "--seed") {
-            if (!parseSeed(value, options.seed))
-                fail("--seed must be a non-negative integer, not '" + value + "'", 2);
-        } else if (arg == "--sampler") {
-            if (!essential_samples::parseSampler(value, options.sampler))
-                fail("--sampler must be prosac, uniform, napsac or pnapsac, not '" + value + "'",
-                     2);
-        } else {
-            fail("unknown option '" + arg + "' (see --help)", 2);
         }
     }
-    if (positional.size() != 1)
-        fail("expected one sequence directory, got " + std::to_string(positional.size()) +
+    if (line.positional.size() != 1)
+        fail("expected one sequence directory, got " + std::to_string(line.positional.size()) +
                  " (see --help)",
              2);
-    options.dir = positional[0];
+    options.dir = line.positional[0];
+    essential_samples::checkEstimatorCombination(options.estimator);
+    if (!options.camera.empty() && !options.cameraFile.empty())
+        fail("give only one of --camera and --camera-file", 2);
     return options;
-}
-
-// Numbers of a file: every whitespace-separated token must be a finite number.
-std::vector<std::vector<double>> readNumberLines(const std::string& path, const std::string& what)
-{
-    std::ifstream file(path);
-    if (!file) fail("missing " + what + ": cannot open '" + path + "'");
-    return readNumberRows(file, "malformed " + what + " '" + path + "'");
-}
-
-cv::Matx33d readCamera(const std::string& path)
-{
-    const auto rows = readNumberLines(path, "camera");
-    if (rows.size() != 3 || rows[0].size() != 3 || rows[1].size() != 3 || rows[2].size() != 3)
-        fail("malformed camera '" + path +
-             "': expected a 3 x 3 matrix, three lines of three "
-             "numbers");
-    cv::Matx33d K;
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j)
-            K(i, j) = rows[i][j];
-    if (!(K(0, 0) > 0) || !(K(1, 1) > 0) || K(2, 0) != 0 || K(2, 1) != 0 || K(2, 2) != 1)
-        fail("malformed camera '" + path + "': fx, fy must be positive and the last row 0 0 1");
-    return K;
-}
-
-std::map<int, Pose> readPoses(const std::string& path)
-{
-    std::map<int, Pose> poses;
-    for (const auto& row : readNumberLines(path, "poses")) {
-        if (row.size() != 13 || row[0] < 0 || row[0] != std::floor(row[0]))
-            fail("malformed poses '" + path + "': expected `k r00 .. r22 Cx Cy Cz` (13 numbers)");
-        Pose pose;
-        for (int i = 0; i < 9; ++i)
-            pose.R.val[i] = row[1 + i];
-        pose.C = cv::Vec3d(row[10], row[11], row[12]);
-        poses[static_cast<int>(row[0])] = pose;
-    }
-    return poses;
-}
-
-// Frames DIR/NNN.jpg (digits only), by number.
-std::map<int, std::string> listFrames(const std::string& dir)
-{
-    std::vector<cv::String> files;
-    try {
-        cv::glob(dir + "/*.jpg", files, false);
-    } catch (const cv::Exception&) {
-        fail("cannot open directory '" + dir + "'");
-    }
-    std::map<int, std::string> frames;
-    for (const cv::String& file : files) {
-        const size_t slash = file.find_last_of("/\\");
-        const std::string name = file.substr(slash == std::string::npos ? 0 : slash + 1);
-        const std::string stem = name.substr(0, name.size() - 4);
-        if (stem.empty() || stem.size() > 9 ||
-            stem.find_first_not_of("0123456789") != std::string::npos)
-            continue;
-        frames[std::stoi(stem)] = file;
-    }
-    return frames;
 }
 
 std::string budgetLabel(double budget)
@@ -317,12 +264,40 @@ double median(std::vector<double> v)
 int run(int argc, char** argv)
 {
     const Options options = parseOptions(argc, argv);
-    const std::map<int, std::string> frames = listFrames(options.dir);
-    if (frames.empty()) fail("no frames NNN.jpg in '" + options.dir + "'");
-    const cv::Matx33d K = readCamera(options.dir + "/camera.txt");
+    const essential_samples::SequenceFrames sequenceFrames =
+        essential_samples::listFrames(options.dir);
+    const std::map<int, std::string>& frames = sequenceFrames.paths;
+    if (frames.empty())
+        fail("no frames in '" + options.dir + "' (NNN.jpg, NNN.jpeg, NNN.png or rgb.txt)");
+
+    essential_samples::Camera camera;
+    if (!options.camera.empty()) {
+        camera.K = essential_samples::parseCameraOption(options.camera);
+    } else if (!options.cameraFile.empty()) {
+        camera = essential_samples::readCameraFile(options.cameraFile);
+    } else {
+        const std::string path = options.dir + "/camera.txt";
+        if (!essential_samples::fileExists(path))
+            fail("missing camera: no '" + path +
+                 "'; give --camera fx,fy,cx,cy or --camera-file FILE");
+        camera = essential_samples::readCameraFile(path);
+    }
+    if (!options.distortion.empty()) {
+        if (!camera.distortion.empty())
+            fail("--distortion: the camera file has distortion coefficients already", 2);
+        camera.distortion = essential_samples::parseDistortionOption(options.distortion);
+    }
+    const cv::Matx33d K = camera.K;
+
+    std::string posesPath = options.poses;
+    if (posesPath.empty())
+        for (const char* name : {"/poses.txt", "/groundtruth.txt"})
+            if (posesPath.empty() && essential_samples::fileExists(options.dir + name))
+                posesPath = options.dir + name;
+    essential_samples::PoseFormat poseFormat = options.poseFormat;
     std::map<int, Pose> poses;
-    const bool haveTruth = static_cast<bool>(std::ifstream(options.dir + "/poses.txt"));
-    if (haveTruth) poses = readPoses(options.dir + "/poses.txt");
+    const bool haveTruth = !posesPath.empty();
+    if (haveTruth) poses = essential_samples::readPoses(posesPath, poseFormat, sequenceFrames);
 
     std::string sequence = options.dir;
     while (sequence.size() > 1 && sequence.back() == '/')
@@ -349,8 +324,8 @@ int run(int argc, char** argv)
                 "inliers,inlier_rate,time_ms,t_err_deg,r_err_deg,correct\n";
     }
 
-    essential_samples::FrontEndParams frontParams;
-    frontParams.descriptor = options.descriptor;
+    const essential_samples::FrontEndParams& frontParams = options.frontEnd;
+    const essential_samples::EstimatorOptions& estimator = options.estimator;
     std::map<int, essential_samples::Features> features;
     double detectMs = 0, matchMs = 0;
     int detections = 0;
@@ -359,7 +334,8 @@ int run(int argc, char** argv)
         if (it == features.end()) {
             const std::string& path = frames.at(k);
             const cv::Mat image = cv::imread(path, cv::IMREAD_GRAYSCALE);
-            if (image.empty()) fail("cannot read image '" + path + "'");
+            if (image.empty())
+                fail("cannot read image '" + path + "' (missing, or not a format OpenCV decodes)");
             const auto start = std::chrono::steady_clock::now();
             it =
                 features.emplace(k, essential_samples::detectAndDescribe(image, frontParams)).first;
@@ -370,8 +346,8 @@ int run(int argc, char** argv)
     };
 
     std::vector<std::pair<std::string, double>> configs;
-    for (const std::string& solver : options.solvers)
-        for (double budget : options.budgets)
+    for (const std::string& solver : estimator.solvers)
+        for (double budget : estimator.budgetsMs)
             configs.emplace_back(solver, budget);
     if (options.opencv) configs.emplace_back("opencv", 0.0);
     std::map<std::pair<std::string, double>, Cell> cells;
@@ -385,8 +361,15 @@ int run(int argc, char** argv)
         const auto& f1 = featuresOf(i);
         const auto& f2 = featuresOf(j);
         auto start = std::chrono::steady_clock::now();
-        const auto matches = essential_samples::matchFeatures(f1, f2, frontParams);
+        auto matches = essential_samples::matchFeatures(f1, f2, frontParams);
         matchMs += elapsedMs(start);
+        if (!camera.distortion.empty()) {
+            // The estimators and the ground truth then see the points of an ideal camera K.
+            cv::undistortPoints(std::vector<cv::Point2f>(matches.points1), matches.points1, K,
+                                camera.distortion, cv::noArray(), K);
+            cv::undistortPoints(std::vector<cv::Point2f>(matches.points2), matches.points2, K,
+                                camera.distortion, cv::noArray(), K);
+        }
         const int n = static_cast<int>(matches.points1.size());
 
         // Ground truth: the relative pose, and which matches agree with it (Sampson < threshold).
@@ -405,7 +388,7 @@ int run(int argc, char** argv)
             const cv::Matx33d F = Kinv.t() * essential_samples::crossMatrix(tTrue) * Rtrue * Kinv;
             int good = 0;
             for (int m = 0; m < n; ++m) {
-                if (sampsonPx(F, matches.points1[m], matches.points2[m]) >= options.threshold)
+                if (sampsonPx(F, matches.points1[m], matches.points2[m]) >= estimator.thresholdPx)
                     continue;
                 ++good;
                 motionSum += cv::norm(matches.points2[m] - matches.points1[m]);
@@ -427,9 +410,9 @@ int run(int argc, char** argv)
             if (n >= 5 && row.solver == "opencv") {
                 cv::Mat mask, R, t;
                 start = std::chrono::steady_clock::now();
-                const cv::Mat E =
-                    cv::findEssentialMat(matches.points1, matches.points2, K, cv::RANSAC, 0.999,
-                                         options.threshold, options.maxIters, mask);
+                const cv::Mat E = cv::findEssentialMat(
+                    matches.points1, matches.points2, K, essential_samples::opencvMethod(estimator),
+                    0.999, estimator.thresholdPx, estimator.maxIterations, mask);
                 row.inliers = mask.empty() ? 0 : cv::countNonZero(mask);
                 if (E.rows == 3 && E.cols == 3) {
                     cv::recoverPose(E, matches.points1, matches.points2, K, R, t, mask);
@@ -441,23 +424,13 @@ int run(int argc, char** argv)
                 }
                 row.timeMs = elapsedMs(start);
             } else if (n >= 5) {
-                cv::essential::EssentialParams params;
-                params.solver = row.solver;
-                params.threshold = options.threshold;
-                params.maxIterations = options.maxIters;
-                params.seed = options.seed;
-                params.sampler = options.sampler;
-                if (row.budget > 0) {
-                    // The budget, not the confidence or the cap, ends the search.
-                    params.timeBudgetMs = row.budget;
-                    params.confidence = 1.0 - 1e-12;
-                    params.maxIterations = 100000000;
-                }
+                const cv::essential::EssentialParams params =
+                    essential_samples::estimatorParams(estimator, row.solver, row.budget);
                 cv::essential::EssentialReport report;
                 start = std::chrono::steady_clock::now();
                 // PROSAC reads the order as quality: the matches best first.
                 const std::vector<int> order =
-                    options.sampler == cv::SAMPLING_PROSAC
+                    estimator.sampler == cv::SAMPLING_PROSAC
                         ? essential_samples::orderByDistance(matches.distances)
                         : std::vector<int>();
                 const cv::Mat E =
@@ -507,19 +480,26 @@ int run(int argc, char** argv)
                  pairs.size(), "");
 
     // Summary.
+    const std::string truthNote =
+        haveTruth
+            ? "ground truth " + posesPath + " (" + essential_samples::poseFormatName(poseFormat) +
+                  " format, " + std::to_string(poses.size()) + " frames with a pose)"
+            : std::string("no ground truth");
     std::printf("sequence %s: %zu frames, %zu pairs (offsets %d..%d, frame step %d), %s\n",
                 sequence.c_str(), frames.size(), pairs.size(), options.offsets.front(),
-                options.offsets.back(), options.framesStep,
-                haveTruth ? "ground truth poses.txt" : "no ground truth");
-    std::printf("front end (%s): %.1f ms per image (detection and description, %d images), "
-                "%.1f ms per pair (matching)\n\n",
-                essential_samples::descriptorName(options.descriptor),
+                options.offsets.back(), options.framesStep, truthNote.c_str());
+    std::printf("front end (%s, matcher %s): %.1f ms per image (detection and description, %d "
+                "images), %.1f ms per pair (matching)\n\n",
+                essential_samples::descriptorName(frontParams.descriptor),
+                essential_samples::matcherName(frontParams.matcher),
                 detectMs / std::max(1, detections), detections, matchMs / pairs.size());
-    std::printf("cv::essential: sampler %s; without a time budget the search stops at confidence "
-                "0.999 or at its cap, the samples that fit in 3/4 of OpenCV's time for "
-                "--max-iters iterations (local and uniform samples in turn past the confidence "
-                "cap); the plane check is on (docs/HARD_PAIRS.md)\n",
-                essential_samples::samplerName(options.sampler));
+    std::printf("cv::essential: engine %s, method %s, sampler %s; without a time budget the search "
+                "stops at confidence 0.999 or at its cap, the samples that fit in 3/4 of OpenCV's "
+                "time for --max-iterations iterations (local and uniform samples in turn past the "
+                "confidence cap); the plane check is on (docs/HARD_PAIRS.md)\n",
+                essential_samples::engineName(estimator.engine),
+                estimator.lmeds ? "lmeds" : "ransac",
+                essential_samples::samplerName(estimator.sampler));
     if (haveTruth)
         std::printf("correct: translation direction within %g deg of the truth\n\n",
                     options.thresholdDeg);

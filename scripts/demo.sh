@@ -2,7 +2,7 @@
 # Builds the Release tree (see build.sh) and runs essential_pair on the bundled Leuven pair:
 # prints the matches, E, R, t, the inliers and the time of each stage, next to OpenCV's
 # findEssentialMat + recoverPose on the same matches. Extra arguments go to essential_pair,
-# e.g. scripts/demo.sh --solver lm --threshold 0.5
+# e.g. scripts/demo.sh --solver lm --threshold-px 0.5
 # Licensed under the Apache License, Version 2.0.
 set -euo pipefail
 
@@ -15,6 +15,6 @@ echo
 # About 35% of the Leuven matches are inliers: with OpenCV's default cap of 1000 iterations neither
 # estimator reaches 0.999 confidence there, and both return whatever their random draws found (see
 # the README). The demo gives both the same cap of 10000, enough for the confidence; pass
-# --max-iters 1000 to see the default behaviour.
+# --max-iterations 1000 to see the default behaviour.
 exec "$build_dir/bin/essential_pair" data/pairs/leuvenA.jpg data/pairs/leuvenB.jpg \
-    --camera-file data/pairs/leuven.camera --max-iters 10000 "$@"
+    --camera-file data/pairs/leuven.camera --max-iterations 10000 "$@"

@@ -861,8 +861,8 @@ TEST(BadInputTable, UserSolverThatThrows)
     };
     for (const auto& [name, needles] : cases) {
         for (const ess::EssentialParams& p : engineVariants(name)) {
-            SCOPED_TRACE(name + " engine " + std::to_string(p.engine) + " score " +
-                         std::to_string(p.score));
+            SCOPED_TRACE(name + " engine " + std::to_string(static_cast<int>(p.engine)) +
+                         " score " + std::to_string(static_cast<int>(p.score)));
             cv::Mat mask;
             expectThrowsWith(
                 [&] { ess::findEssentialMatIter(scene().px1, scene().px2, K, p, mask); }, needles);
@@ -880,8 +880,8 @@ TEST(BadInputTable, UserSolverThatReturnsGarbage)
     for (int kind = 0; kind < 5; ++kind) {
         const std::string name = "badinput_garbage_" + std::to_string(kind);
         for (const ess::EssentialParams& p : engineVariants(name)) {
-            SCOPED_TRACE(name + " engine " + std::to_string(p.engine) + " score " +
-                         std::to_string(p.score));
+            SCOPED_TRACE(name + " engine " + std::to_string(static_cast<int>(p.engine)) +
+                         " score " + std::to_string(static_cast<int>(p.score)));
             cv::Mat mask;
             ess::EssentialReport report;
             const cv::Mat E =

@@ -34,6 +34,28 @@ const char* descriptorName(Descriptor descriptor);
 /** Parses "brief", "orb" or "patch"; false for anything else. */
 bool parseDescriptor(const std::string& name, Descriptor& descriptor);
 
+/** How matchFeatures() finds the nearest corner of image 1 for each corner of image 2. */
+enum class Matcher {
+    /** Every corner against every corner (OpenCV's BFMatcher): exact, quadratic in the corners. */
+    BruteForce,
+    /** Only the strongest corners (FAST score) of each cell of a kGridCells x kGridCells grid over
+    the image, at most kGridCorners per image, then brute force: a fixed cost whatever the image. */
+    Grid,
+    /** Approximate nearest neighbours with FLANN: locality-sensitive hashing for the binary
+    descriptors, randomised k-d trees for the patch; some nearest neighbours are missed. */
+    Flann
+};
+
+/** "brute-force", "grid" or "flann". */
+const char* matcherName(Matcher matcher);
+
+/** Parses "brute-force", "grid" or "flann"; false for anything else. */
+bool parseMatcher(const std::string& name, Matcher& matcher);
+
+/** Matcher::Grid: the grid over the image and the corners it keeps per image. */
+const int kGridCells = 8;
+const int kGridCorners = 2048;
+
 /** Settings of the front end. */
 struct FrontEndParams
 {
@@ -67,6 +89,12 @@ struct FrontEndParams
     11 ms per 640 x 480 image against 27 ms for rBRIEF). Video from a rotating (hand-held)
     camera may prefer RotatedBrief. */
     Descriptor descriptor = Descriptor::UprightBrief;
+
+    /** How the corners are matched; brute force by default (exact). Matcher::Grid is the fast mode
+    (docs/FRONTEND.md, "Faster matching": 10-82 ms of matching on the rail and real pairs, 5 to 420
+    times less than brute force). Grid limits the corners when they are detected, so
+    detectAndDescribe() and matchFeatures() must get the same setting. */
+    Matcher matcher = Matcher::BruteForce;
 
     /** Fraction of the matches kept, the best by descriptor distance; in (0, 1]. */
     double keepFraction = 0.2;
@@ -111,7 +139,8 @@ struct Matches
 };
 
 /** Matches every corner of image 2 to its nearest corner of image 1 by descriptor distance (Hamming
-for BRIEF, L2 for the patch; brute force, no distance limit, no ratio or cross check), keeps the
+for BRIEF, L2 for the patch; params.matcher: brute force by default, or approximate; no distance
+limit, no ratio or cross check), keeps the
 best `keepFraction` of these matches and shuffles them with `shuffleSeed`. Both feature sets must
 hold the same descriptor. */
 Matches matchFeatures(const Features& features1, const Features& features2,

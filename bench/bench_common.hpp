@@ -50,8 +50,8 @@ inline double median(const std::vector<double>& v)
     return percentile(v, 0.5);
 }
 
-/** Thread CPU time in milliseconds (CLOCK_THREAD_CPUTIME_ID): on a shared machine the time the
-thread waits for a core is not charged to it, which wall time would add at random. */
+/** Thread CPU time in milliseconds (CLOCK_THREAD_CPUTIME_ID): the time the thread waits for a core
+is not charged to it, which wall time would add at random. */
 inline double threadCpuMs()
 {
     timespec ts{};

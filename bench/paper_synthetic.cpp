@@ -24,7 +24,7 @@
 // level is bisected geometrically. A level stops early once more than 1% of its problems failed
 // (it cannot reach 0.99), or when its mean time exceeds --max-ms (then the method is reported as
 // beyond the cap). Cells with fewer than --min-inliers correct matches are not run. The time of a
-// level is the mean wall time of a whole call, including pose recovery (the paper averages), one
+// level is the mean thread CPU time of a whole call, including pose recovery (the paper averages), one
 // call per thread at a time.
 //
 // Part B (the paper's Figure 3): reliability against mean time as M grows, (left) for

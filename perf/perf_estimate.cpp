@@ -13,11 +13,11 @@
 // Counters, per run: median_ms (median of the per-call wall times: estimate + recoverPose), p90_ms,
 // median_cpu_ms (median of the per-call CPU times of the thread), and
 // reliable (fraction with rotation error < 2 deg and translation direction error < 5 deg, the
-// issue's criterion), auc1 and auc5 (the AUC up to 1 and 5 degrees of max(rotation, translation
-// direction) error, test/pose_auc.hpp; docs/ACCURACY.md). Repetitions are interleaved at random
-// with the other benchmarks so that the load of a shared machine falls on every method alike;
-// scripts/perf.sh takes the median of median_ms and the mean of reliable, auc1 and auc5 over the
-// repetitions.
+// project's definition, docs/EXPERIMENTS.md), auc1 and auc5 (the AUC up to 1 and 5 degrees of
+// max(rotation, translation direction) error, test/pose_auc.hpp; docs/ACCURACY.md). Repetitions are
+// interleaved at random with the other benchmarks so that whatever slows the machine during a run
+// falls on every method alike; scripts/perf.sh takes the median of median_ms and the mean of
+// reliable, auc1 and auc5 over the repetitions.
 //
 // Method names: essential (the drop-in overload with OpenCV's default arguments),
 // essential:<solver>:<engine> (the EssentialParams overload with that solver and engine),
@@ -117,8 +117,8 @@ Estimator essentialWith(const std::string& solver, cv::essential::EssentialEngin
     };
 }
 
-/** CPU time of this thread in milliseconds: on a shared machine it leaves out the time the thread
-waited for a core, which wall time charges to long calls more than to short ones. */
+/** CPU time of this thread in milliseconds: it leaves out the time the thread waited for a core,
+which wall time charges to long calls more than to short ones. */
 double threadCpuMs()
 {
     timespec ts;

@@ -54,7 +54,7 @@ export ASAN_OPTIONS="halt_on_error=1:abort_on_error=1:detect_leaks=1"
 export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1"
 # -rss_limit_mb: the targets' inputs stay far below; -timeout: one input taking more than 60 s is a
 # hang (every target caps its iterations and time budgets). libFuzzer's timeout is wall time: 10 s
-# failed a CI run on a loaded machine with a legitimate engine input (the OpenCV-time sample budget
+# failed a CI run with a legitimate engine input (the OpenCV-time sample budget
 # under ASan), so the margin is wide; a real hang does not end.
 limit=(-max_total_time="$seconds")
 [[ -z "$runs" ]] || limit=(-runs="$runs")

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 # Turns the Google Benchmark JSON of essential_perf (scripts/perf.sh) into the markdown tables of
 # docs/PERFORMANCE.md: medians over the repetitions, ratios to the module within the same run, and
-# the targets checked. Licensed under the Apache License, Version 2.0.
+# the speed targets checked. Licensed under the Apache License, Version 2.0.
 #
 #   perf_tables.py RESULTS.json [--doc docs/PERFORMANCE.md]
 #
@@ -98,7 +98,7 @@ def targets_table(table):
 
 
 def variants_table(table):
-    out = ["| N | inliers | solver | engine | reliable | median CPU ms | median wall ms |",
+    out = ["| N | inliers | solver | engine | reliable (2/5 deg) | median CPU ms | median wall ms |",
            "|---|---|---|---|---|---|---|"]
     for (n, ratio) in sorted(table, key=lambda k: (k[0], -k[1])):
         for method, e in sorted(table[(n, ratio)].items()):
@@ -183,9 +183,7 @@ def main():
     table = estimate_rows(runs)
     lines = []
     lines.append(f"Run {context.get('date', '')} on {context.get('host_name', '')}, "
-                 f"{context.get('num_cpus', '?')} CPUs at {context.get('mhz_per_cpu', '?')} MHz, "
-                 f"load average at the start "
-                 f"{', '.join(f'{x:.1f}' for x in context.get('load_avg', []))}.")
+                 f"{context.get('num_cpus', '?')} CPUs at {context.get('mhz_per_cpu', '?')} MHz.")
     lines.append("")
     targets, summary = targets_table(table)
     if len(targets) > 2:

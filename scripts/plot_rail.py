@@ -10,7 +10,7 @@
 #                               least MIN_MOTION px; x: mean CPU time of the calls, one point
 #                               per budget); centre and right: reliability against
 #                               average pixel motion at the largest and at the 10 ms budget, with
-#                               the inlier rate on a second axis
+#                               the inlier rate on a second axis and the pairs per bin (n)
 # Uses matplotlib (Debian python3-matplotlib). Licensed under the Apache License, Version 2.0.
 import argparse
 import csv
@@ -265,13 +265,23 @@ def main():
                                 [float(t["reliability"]) for t in pts],
                                 **STYLE.get(so, {"label": so}))
                     inl = pts
+                if inl:
+                    # Pairs per bin (the same pairs for every solver): a bin of 4 pairs moves
+                    # its reliability in steps of 0.25, so the count says how far to trust it.
+                    for t in inl:
+                        ax.annotate(f"n={t['pairs']}", (float(t["mean_motion_px"]), 1.0),
+                                    xycoords=("data", "axes fraction"), xytext=(0, 2),
+                                    textcoords="offset points", ha="center", va="bottom",
+                                    fontsize=8, color="dimgrey")
                 plain_log_axis(ax, [1, 2, 5, 10, 20, 50, 100, 200])
-                ax.set_xlabel("average pixel motion of the pair (px, bin mean; log scale)")
+                ax.set_xlabel("average pixel motion of the pair (px, bin mean; log scale);\n"
+                              "n = pairs in the bin")
                 ax.set_ylabel("reliability (t within 10 deg)")
                 ax.set_ylim(-0.02, 1.02)
                 ax.grid(True, which="both", alpha=0.3)
                 what = "OpenCV: no budget" if col == 1 else "OpenCV not shown"
-                ax.set_title(f"{s}: budget {budget:g} ms per pair ({what})", fontsize=10)
+                ax.set_title(f"{s}: budget {budget:g} ms per pair ({what})", fontsize=10,
+                             pad=14)
                 if inl:
                     ax2 = ax.twinx()
                     ax2.plot([float(t["mean_motion_px"]) for t in inl],

@@ -31,8 +31,8 @@ using essential_colmap::VerificationOptions;
 namespace cli = essential_samples;
 
 const char* const kUsage =
-    "usage: essential_colmap --database DB.db [--threads N] [--solver S] [--threshold PX]\n"
-    "                        [--min-inliers K] [--pairs all|unverified] [--max-iters N]\n"
+    "usage: essential_colmap --database DB.db [--threads N] [--solver S] [--threshold-px PX]\n"
+    "                        [--min-inliers K] [--pairs all|unverified] [--max-iterations N]\n"
     "                        [--seed S] [--dry-run] [--json]\n"
     "\n"
     "Verifies the matched image pairs of a COLMAP 3.8 database with cv::essential and writes\n"
@@ -43,17 +43,18 @@ const char* const kUsage =
     "  --database DB.db      the COLMAP database (after feature extraction and matching)\n"
     "  --threads N           worker threads (default: all cores)\n"
     "  --solver S            the module's solver or mix (default gn+nister)\n"
-    "  --threshold PX        inlier threshold on the Sampson distance in pixels, normalised by\n"
+    "  --threshold-px PX     inlier threshold on the Sampson distance in pixels, normalised by\n"
     "                        the mean focal length of the pair's cameras (default 4, COLMAP's\n"
     "                        SiftMatching.max_error)\n"
     "  --min-inliers K       fewer inliers make a pair DEGENERATE (default 15, COLMAP's\n"
     "                        min_num_inliers; at least 6)\n"
     "  --pairs all|unverified  every matched pair (default), or only those without a\n"
     "                        two_view_geometries row\n"
-    "  --max-iters N         the module's iteration cap (default 1000)\n"
+    "  --max-iterations N    the module's iteration cap (default 1000)\n"
     "  --seed S              seed of the batch (decimal or 0x hex)\n"
     "  --dry-run             write nothing; print what would change\n"
     "  --json                print the summary (and each pair's change) as one JSON object\n"
+    "  (deprecated spellings, accepted with a warning: --threshold, --max-iters)\n"
     "\n"
     "exit status: 0 done, 1 input error (database refused, unreadable, not written), 2 usage "
     "error\n";
@@ -68,8 +69,17 @@ struct Options
 
 /** One "--name value" option into `options`; cli::fail(..., 2) for a bad value or an unknown name.
  */
-void parseValueOption(const std::string& arg, const std::string& value, Options& options)
+void parseValueOption(std::string arg, const std::string& value, Options& options)
 {
+    // The spellings before the CLIs shared their option names (essential_pair, essential_sequence).
+    static const std::map<std::string, std::string> deprecated = {
+        {"--threshold", "--threshold-px"}, {"--max-iters", "--max-iterations"}};
+    const auto old = deprecated.find(arg);
+    if (old != deprecated.end()) {
+        std::cerr << "essential_colmap: warning: " << arg << " is deprecated; use " << old->second
+                  << "\n";
+        arg = old->second;
+    }
     long long number;
     cv::essential::EssentialParams& params = options.verification.params;
     if (arg == "--database") {
@@ -83,9 +93,9 @@ void parseValueOption(const std::string& arg, const std::string& value, Options&
         if (cli::parseSolverList("--solver", value).size() != 1)
             cli::fail("--solver takes one solver or mix (gn+nister), not a list", 2);
         params.solver = value;
-    } else if (arg == "--threshold") {
+    } else if (arg == "--threshold-px") {
         if (!cli::parseDouble(value, params.threshold) || !(params.threshold > 0.0))
-            cli::fail("--threshold must be a positive number of pixels, not '" + value + "'", 2);
+            cli::fail("--threshold-px must be a positive number of pixels, not '" + value + "'", 2);
     } else if (arg == "--min-inliers") {
         if (!cli::parseInt(value, number) || number < 6 || number > 1000000)
             cli::fail("--min-inliers must be an integer of at least 6, not '" + value + "'", 2);
@@ -94,9 +104,9 @@ void parseValueOption(const std::string& arg, const std::string& value, Options&
         if (value != "all" && value != "unverified")
             cli::fail("--pairs must be all or unverified, not '" + value + "'", 2);
         options.verification.unverifiedOnly = value == "unverified";
-    } else if (arg == "--max-iters") {
+    } else if (arg == "--max-iterations") {
         if (!cli::parseInt(value, number) || number < 1 || number > 100000000)
-            cli::fail("--max-iters must be a positive integer, not '" + value + "'", 2);
+            cli::fail("--max-iterations must be a positive integer, not '" + value + "'", 2);
         params.maxIterations = static_cast<int>(number);
     } else if (arg == "--seed") {
         if (!cli::parseSeed(value, params.seed))

@@ -169,15 +169,11 @@ inline Camera readKittiCalibration(std::istream& in, const std::string& path)
     std::string line;
     while (std::getline(in, line)) {
         if (line.rfind("P0:", 0) != 0) continue;
-        std::istringstream stream(line.substr(3));
-        std::vector<double> p;
-        std::string token;
-        while (stream >> token) {
-            double value;
-            if (!parseDouble(token, value)) fail(malformed + ": '" + token + "' is not a number");
-            p.push_back(value);
-        }
-        if (p.size() != 12) fail(malformed + ": P0 must have 12 numbers (a 3 x 4 matrix)");
+        std::istringstream numbers(line.substr(3));
+        const std::vector<std::vector<double>> rows = readNumberRows(numbers, malformed);
+        if (rows.size() != 1 || rows[0].size() != 12)
+            fail(malformed + ": P0 must have 12 numbers (a 3 x 4 matrix)");
+        const std::vector<double>& p = rows[0];
         Camera camera;
         camera.K = cv::Matx33d(p[0], p[1], p[2], p[4], p[5], p[6], p[8], p[9], p[10]);
         checkCamera(camera.K, path);

@@ -12,6 +12,8 @@
 #include <opencv2/core.hpp>
 #include <opencv2/essential.hpp>
 
+#include "named_values.hpp"
+
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
@@ -173,36 +175,24 @@ inline std::vector<std::vector<double>> readNumberRows(std::istream& in,
     return rows;
 }
 
+/** The samplers of EssentialParams::sampler by their command-line names. */
+inline constexpr NamedValue<cv::SamplingMethod> kSamplerNames[] = {
+    {"uniform", cv::SAMPLING_UNIFORM},
+    {"prosac", cv::SAMPLING_PROSAC},
+    {"napsac", cv::SAMPLING_NAPSAC},
+    {"pnapsac", cv::SAMPLING_PROGRESSIVE_NAPSAC}};
+
 /** "uniform", "prosac", "napsac" or "pnapsac" as the cv::SamplingMethod the module takes in
 EssentialParams::sampler; false (value unchanged) for anything else. */
 inline bool parseSampler(const std::string& name, cv::SamplingMethod& sampler)
 {
-    if (name == "uniform")
-        sampler = cv::SAMPLING_UNIFORM;
-    else if (name == "prosac")
-        sampler = cv::SAMPLING_PROSAC;
-    else if (name == "napsac")
-        sampler = cv::SAMPLING_NAPSAC;
-    else if (name == "pnapsac")
-        sampler = cv::SAMPLING_PROGRESSIVE_NAPSAC;
-    else
-        return false;
-    return true;
+    return parseNamedValue(kSamplerNames, name, sampler);
 }
 
 /** The name parseSampler() reads for a sampler. */
-inline const char* samplerName(int sampler)
+inline const char* samplerName(cv::SamplingMethod sampler)
 {
-    switch (sampler) {
-    case cv::SAMPLING_PROSAC:
-        return "prosac";
-    case cv::SAMPLING_NAPSAC:
-        return "napsac";
-    case cv::SAMPLING_PROGRESSIVE_NAPSAC:
-        return "pnapsac";
-    default:
-        return "uniform";
-    }
+    return nameOfValue(kSamplerNames, sampler, "uniform");
 }
 
 /** Indices of the matches sorted by descriptor distance, best (smallest) first, ties in input

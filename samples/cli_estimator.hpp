@@ -59,16 +59,15 @@ inline std::vector<OptionSpec> estimatorOptionSpecs()
             {"max-iters", true, "max-iterations"}};
 }
 
+/** The engines of EssentialParams::engine by their command-line names. */
+inline constexpr NamedValue<cv::essential::EssentialEngine> kEngineNames[] = {
+    {"adaptive", cv::essential::ENGINE_ADAPTIVE},
+    {"preemptive", cv::essential::ENGINE_PREEMPTIVE},
+    {"opencv", cv::essential::ENGINE_OPENCV}};
+
 inline const char* engineName(cv::essential::EssentialEngine engine)
 {
-    switch (engine) {
-    case cv::essential::ENGINE_PREEMPTIVE:
-        return "preemptive";
-    case cv::essential::ENGINE_OPENCV:
-        return "opencv";
-    default:
-        return "adaptive";
-    }
+    return nameOfValue(kEngineNames, engine, "adaptive");
 }
 
 /** Applies the option `name` (an estimator option, see estimatorOptionSpecs()) to `options` and
@@ -94,15 +93,8 @@ inline bool applyEstimatorOption(const GivenOption& option, bool lists, Estimato
         if (!lists && options.budgetsMs.size() != 1)
             fail("--budget-ms takes one budget here, not a list ('" + value + "')", 2);
     } else if (name == "engine") {
-        bool known = false;
-        for (cv::essential::EssentialEngine e :
-             {cv::essential::ENGINE_ADAPTIVE, cv::essential::ENGINE_PREEMPTIVE,
-              cv::essential::ENGINE_OPENCV})
-            if (value == engineName(e)) {
-                options.engine = e;
-                known = true;
-            }
-        if (!known) fail("--engine must be adaptive, preemptive or opencv, not '" + value + "'", 2);
+        if (!parseNamedValue(kEngineNames, value, options.engine))
+            fail("--engine must be adaptive, preemptive or opencv, not '" + value + "'", 2);
         if (options.engine == cv::essential::ENGINE_OPENCV &&
             !cv::essential::isOpenCvLoopAvailable())
             fail("--engine opencv: this build cannot run solvers in OpenCV's loop", 2);

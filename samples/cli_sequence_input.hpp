@@ -35,33 +35,19 @@ namespace essential_samples {
 /** A pose file's format. */
 enum class PoseFormat { Auto, Rail, Tum, Kitti };
 
+inline constexpr NamedValue<PoseFormat> kPoseFormatNames[] = {{"auto", PoseFormat::Auto},
+                                                              {"rail", PoseFormat::Rail},
+                                                              {"tum", PoseFormat::Tum},
+                                                              {"kitti", PoseFormat::Kitti}};
+
 inline bool parsePoseFormat(const std::string& name, PoseFormat& format)
 {
-    if (name == "auto")
-        format = PoseFormat::Auto;
-    else if (name == "rail")
-        format = PoseFormat::Rail;
-    else if (name == "tum")
-        format = PoseFormat::Tum;
-    else if (name == "kitti")
-        format = PoseFormat::Kitti;
-    else
-        return false;
-    return true;
+    return parseNamedValue(kPoseFormatNames, name, format);
 }
 
 inline const char* poseFormatName(PoseFormat format)
 {
-    switch (format) {
-    case PoseFormat::Rail:
-        return "rail";
-    case PoseFormat::Tum:
-        return "tum";
-    case PoseFormat::Kitti:
-        return "kitti";
-    default:
-        return "auto";
-    }
+    return nameOfValue(kPoseFormatNames, format, "auto");
 }
 
 /** The frames of a sequence: path by frame number, and the timestamp of each when DIR/rgb.txt

@@ -7,6 +7,7 @@
 // verification does, in one transaction; `colmap mapper` then reconstructs from it.
 
 #include "cli_common.hpp"
+#include "cli_parser.hpp"
 #include "colmap/colmap_database.hpp"
 #include "colmap/verify_pairs.hpp"
 
@@ -67,75 +68,75 @@ struct Options
     bool json = false;
 };
 
-/** One "--name value" option into `options`; cli::fail(..., 2) for a bad value or an unknown name.
- */
-void parseValueOption(std::string arg, const std::string& value, Options& options)
+/** One option with a value into `options` (its name without "--", deprecated spellings already
+renamed by the parser); cli::fail(..., 2) for a bad value. */
+void parseValueOption(const std::string& name, const std::string& value, Options& options)
 {
-    // The spellings before the CLIs shared their option names (essential_pair, essential_sequence).
-    static const std::map<std::string, std::string> deprecated = {
-        {"--threshold", "--threshold-px"}, {"--max-iters", "--max-iterations"}};
-    const auto old = deprecated.find(arg);
-    if (old != deprecated.end()) {
-        std::cerr << "essential_colmap: warning: " << arg << " is deprecated; use " << old->second
-                  << "\n";
-        arg = old->second;
-    }
     long long number;
     cv::essential::EssentialParams& params = options.verification.params;
-    if (arg == "--database") {
+    if (name == "database") {
         options.database = value;
-    } else if (arg == "--threads") {
+    } else if (name == "threads") {
         if (!cli::parseInt(value, number) || number < 1 || number > 1024)
             cli::fail("--threads must be an integer in [1, 1024], not '" + value + "'", 2);
         options.verification.threads = static_cast<int>(number);
-    } else if (arg == "--solver") {
+    } else if (name == "solver") {
         // One name or mix ("gn+nister"); createSolver() checks it and names the registered ones.
         if (cli::parseSolverList("--solver", value).size() != 1)
             cli::fail("--solver takes one solver or mix (gn+nister), not a list", 2);
         params.solver = value;
-    } else if (arg == "--threshold-px") {
+    } else if (name == "threshold-px") {
         if (!cli::parseDouble(value, params.threshold) || !(params.threshold > 0.0))
             cli::fail("--threshold-px must be a positive number of pixels, not '" + value + "'", 2);
-    } else if (arg == "--min-inliers") {
+    } else if (name == "min-inliers") {
         if (!cli::parseInt(value, number) || number < 6 || number > 1000000)
             cli::fail("--min-inliers must be an integer of at least 6, not '" + value + "'", 2);
         options.verification.minInliers = static_cast<int>(number);
-    } else if (arg == "--pairs") {
+    } else if (name == "pairs") {
         if (value != "all" && value != "unverified")
             cli::fail("--pairs must be all or unverified, not '" + value + "'", 2);
         options.verification.unverifiedOnly = value == "unverified";
-    } else if (arg == "--max-iterations") {
+    } else if (name == "max-iterations") {
         if (!cli::parseInt(value, number) || number < 1 || number > 100000000)
             cli::fail("--max-iterations must be a positive integer, not '" + value + "'", 2);
         params.maxIterations = static_cast<int>(number);
-    } else if (arg == "--seed") {
+    } else if (name == "seed") {
         if (!cli::parseSeed(value, params.seed))
             cli::fail("--seed must be a non-negative integer, not '" + value + "'", 2);
-    } else {
-        cli::fail("unknown option '" + arg + "' (see --help)", 2);
     }
 }
 
 Options parseOptions(int argc, char** argv)
 {
+    // The same parser and the same option names as essential_pair and essential_sequence; the
+    // spellings from before they shared their names are accepted with a warning.
+    const std::vector<cli::OptionSpec> specs = {{"database", true, ""},
+                                                {"threads", true, ""},
+                                                {"solver", true, ""},
+                                                {"threshold-px", true, ""},
+                                                {"min-inliers", true, ""},
+                                                {"pairs", true, ""},
+                                                {"max-iterations", true, ""},
+                                                {"seed", true, ""},
+                                                {"dry-run", false, ""},
+                                                {"json", false, ""},
+                                                {"threshold", true, "threshold-px"},
+                                                {"max-iters", true, "max-iterations"}};
+    const cli::CommandLine line = cli::parseCommandLine("essential_colmap", argc, argv, specs);
+    if (line.help) {
+        std::cout << kUsage;
+        std::exit(0);
+    }
+    if (!line.positional.empty())
+        cli::fail("unexpected argument '" + line.positional.front() + "' (see --help)", 2);
     Options options;
-    // Options without a value.
-    const std::map<std::string, bool*> switches = {{"--json", &options.json},
-                                                   {"--dry-run", &options.dryRun}};
-    for (int i = 1; i < argc; ++i) {
-        std::string arg = argv[i];
-        if (arg == "-h" || arg == "--help") {
-            std::cout << kUsage;
-            std::exit(0);
-        }
-        const auto flag = switches.find(arg);
-        if (flag != switches.end()) {
-            *flag->second = true;
-        } else if (!cli::isOption(arg)) {
-            cli::fail("unexpected argument '" + arg + "' (see --help)", 2);
-        } else {
-            parseValueOption(arg, cli::optionValue(arg, i, argc, argv), options);
-        }
+    for (const cli::GivenOption& option : line.options) {
+        if (option.name == "dry-run")
+            options.dryRun = true;
+        else if (option.name == "json")
+            options.json = true;
+        else
+            parseValueOption(option.name, option.value, options);
     }
     if (options.database.empty()) cli::fail("missing --database DB.db (see --help)", 2);
     return options;

@@ -2,6 +2,7 @@
 // See the LICENSE file at the top of the source tree.
 
 #include "frontend/frontend.hpp"
+#include "named_values.hpp"
 
 #include <opencv2/features2d.hpp>
 #include <opencv2/flann.hpp>
@@ -159,52 +160,33 @@ std::vector<cv::DMatch> flannNearest(const Features& features1, const Features& 
     return nearest;
 }
 
+const NamedValue<Matcher> kMatcherNames[] = {
+    {"brute-force", Matcher::BruteForce}, {"grid", Matcher::Grid}, {"flann", Matcher::Flann}};
+
+const NamedValue<Descriptor> kDescriptorNames[] = {{"brief", Descriptor::UprightBrief},
+                                                   {"orb", Descriptor::RotatedBrief},
+                                                   {"patch", Descriptor::Patch}};
+
 } // namespace
 
 const char* matcherName(Matcher matcher)
 {
-    switch (matcher) {
-    case Matcher::BruteForce:
-        return "brute-force";
-    case Matcher::Grid:
-        return "grid";
-    case Matcher::Flann:
-        return "flann";
-    }
-    return "?";
+    return nameOfValue(kMatcherNames, matcher, "?");
 }
 
 bool parseMatcher(const std::string& name, Matcher& matcher)
 {
-    for (Matcher m : {Matcher::BruteForce, Matcher::Grid, Matcher::Flann})
-        if (name == matcherName(m)) {
-            matcher = m;
-            return true;
-        }
-    return false;
+    return parseNamedValue(kMatcherNames, name, matcher);
 }
 
 const char* descriptorName(Descriptor descriptor)
 {
-    switch (descriptor) {
-    case Descriptor::UprightBrief:
-        return "brief";
-    case Descriptor::RotatedBrief:
-        return "orb";
-    case Descriptor::Patch:
-        return "patch";
-    }
-    return "?";
+    return nameOfValue(kDescriptorNames, descriptor, "?");
 }
 
 bool parseDescriptor(const std::string& name, Descriptor& descriptor)
 {
-    for (Descriptor d : {Descriptor::UprightBrief, Descriptor::RotatedBrief, Descriptor::Patch})
-        if (name == descriptorName(d)) {
-            descriptor = d;
-            return true;
-        }
-    return false;
+    return parseNamedValue(kDescriptorNames, name, descriptor);
 }
 
 std::vector<double> pyramidScales(cv::Size imageSize, int minLevelSize)

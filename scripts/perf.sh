@@ -33,8 +33,8 @@ fi
 echo
 echo "machine: $(lscpu | sed -n 's/^Model name: *//p'), $(nproc) cores"
 if [[ "$doc" == "-" ]]; then
-  python3 scripts/perf_tables.py "$out"
+  /usr/bin/python3 scripts/perf_tables.py "$out"
 else
-  python3 scripts/perf_tables.py "$out" --doc "$doc"
+  /usr/bin/python3 scripts/perf_tables.py "$out" --doc "$doc"
   echo "tables written to $doc"
 fi

@@ -17,6 +17,7 @@
 #include "frontend/sequence_io.hpp"
 #include "hard_scenes.hpp"
 #include "match_cache.hpp"
+#include "methods.hpp"
 
 #include <opencv2/calib3d.hpp>
 #include <opencv2/core.hpp>
@@ -83,123 +84,8 @@ const char* const kUsage =
 // ---------------------------------------------------------------------------------------------
 // Methods
 
-enum class Kind { CvRansac, UsacMagsac, UsacAccurate, UsacProsac, Dropin, Ours };
-
-struct Method
-{
-    std::string label;
-    Kind kind = Kind::Ours;
-    cv::essential::EssentialParams params; // Kind::Ours only
-    bool sortedByDistance = false;         // PROSAC: matches sorted best first
-};
-
-bool parseBool(const std::string& value, bool& out)
-{
-    if (value == "1" || value == "true" || value == "on") return out = true, true;
-    if (value == "0" || value == "false" || value == "off") return out = false, true;
-    return false;
-}
-
-/** Sets one `key=value` of an `ours:` method in params; fails with a message naming the key. */
-void applyOption(const std::string& key, const std::string& value,
-                 cv::essential::EssentialParams& params)
-{
-    const std::string where = "ours option '" + key + "=" + value + "': ";
-    long long integer = 0;
-    double number = 0;
-    if (key == "solver") {
-        try {
-            cv::essential::createSolver(value);
-        } catch (const cv::Exception& e) {
-            fail(where + e.err, 2);
-        }
-        params.solver = value;
-    } else if (key == "sampler") {
-        static const std::map<std::string, cv::SamplingMethod> samplers = {
-            {"uniform", cv::SAMPLING_UNIFORM},
-            {"prosac", cv::SAMPLING_PROSAC},
-            {"napsac", cv::SAMPLING_NAPSAC},
-            {"pnapsac", cv::SAMPLING_PROGRESSIVE_NAPSAC}};
-        const auto it = samplers.find(value);
-        if (it == samplers.end()) fail(where + "sampler is uniform, prosac, napsac or pnapsac", 2);
-        params.sampler = it->second;
-    } else if (key == "maxIters") {
-        if (!parseInt(value, integer) || integer < 1 || integer > 100000000)
-            fail(where + "maxIters is a positive integer", 2);
-        params.maxIterations = static_cast<int>(integer);
-    } else if (key == "lo") {
-        if (!parseInt(value, integer) || integer < 0 || integer > 1000)
-            fail(where + "lo (IRLS iterations of local optimisation) is an integer >= 0", 2);
-        params.loIterations = static_cast<int>(integer);
-    } else if (key == "sprt") {
-        if (!parseBool(value, params.sprt)) fail(where + "sprt is 0 or 1", 2);
-    } else if (key == "threshold") {
-        if (!parseDouble(value, number) || !(number > 0))
-            fail(where + "threshold is a positive number of pixels", 2);
-        params.threshold = number;
-    } else if (key == "budgetMs") {
-        if (!parseDouble(value, number) || !(number >= 0))
-            fail(where + "budgetMs (time budget) is a number of ms >= 0", 2);
-        params.timeBudgetMs = number;
-    } else if (key == "budget") {
-        if (value == "opencv")
-            params.sampleBudget = cv::essential::BUDGET_OPENCV_TIME;
-        else if (value == "confidence")
-            params.sampleBudget = cv::essential::BUDGET_CONFIDENCE;
-        else
-            fail(where + "budget is opencv or confidence", 2);
-    } else if (key == "plane") {
-        if (!parseBool(value, params.planeParallax)) fail(where + "plane is 0 or 1", 2);
-    } else if (key == "local") {
-        if (!parseBool(value, params.budgetLocalSamples)) fail(where + "local is 0 or 1", 2);
-    } else {
-        fail("unknown ours option '" + key +
-                 "' (known: solver, sampler, maxIters, lo, sprt, threshold, budgetMs, budget, "
-                 "plane, local)",
-             2);
-    }
-}
-
-/** "cv_ransac", "ours:k=v;k=v", "label=ours:..." or "label=cv_ransac". */
-Method parseMethod(const std::string& text)
-{
-    Method m;
-    std::string spec = text;
-    const size_t equals = text.find('='), colon = text.find(':');
-    if (equals != std::string::npos && (colon == std::string::npos || equals < colon)) {
-        m.label = text.substr(0, equals);
-        spec = text.substr(equals + 1);
-        if (m.label.empty()) fail("--methods: empty label in '" + text + "'", 2);
-    } else {
-        m.label = text;
-    }
-    static const std::map<std::string, Kind> fixed = {{"cv_ransac", Kind::CvRansac},
-                                                      {"usac_magsac", Kind::UsacMagsac},
-                                                      {"usac_accurate", Kind::UsacAccurate},
-                                                      {"usac_prosac", Kind::UsacProsac},
-                                                      {"dropin", Kind::Dropin}};
-    const auto it = fixed.find(spec);
-    if (it != fixed.end()) {
-        m.kind = it->second;
-        m.sortedByDistance = m.kind == Kind::UsacProsac;
-        return m;
-    }
-    if (spec != "ours" && spec.rfind("ours:", 0) != 0)
-        fail("--methods: unknown method '" + spec +
-                 "' (cv_ransac, usac_magsac, usac_accurate, usac_prosac, dropin, ours[:k=v;...])",
-             2);
-    m.kind = Kind::Ours;
-    if (spec.size() > 5) {
-        for (const std::string& kv : split(spec.substr(5), ';')) {
-            if (kv.empty()) continue;
-            const size_t eq = kv.find('=');
-            if (eq == std::string::npos) fail("--methods: '" + kv + "' is not key=value", 2);
-            applyOption(kv.substr(0, eq), kv.substr(eq + 1), m.params);
-        }
-    }
-    m.sortedByDistance = m.params.sampler == cv::SAMPLING_PROSAC;
-    return m;
-}
+using essential_bench::Method;
+using essential_bench::parseMethod;
 
 // ---------------------------------------------------------------------------------------------
 // Problems
@@ -530,70 +416,15 @@ struct Outcome
 Outcome runMethod(const Method& m, const Problem& p, const std::vector<cv::Point2f>& p1,
                   const std::vector<cv::Point2f>& p2, std::uint64_t seed)
 {
+    const essential_bench::MethodOutcome r = essential_bench::runMethod(m, p.K, p1, p2, seed, p.name);
     Outcome out;
-    const cv::Mat K(p.K);
-    cv::Mat E, mask;
-    cv::Matx33d R;
-    cv::Vec3d t;
-    cv::essential::EssentialReport report;
-    const double cpu0 = essential_bench::threadCpuMs();
-    const auto wall0 = std::chrono::steady_clock::now();
-    try {
-        switch (m.kind) {
-        case Kind::CvRansac:
-            E = cv::findEssentialMat(p1, p2, K, cv::RANSAC, 0.999, 1.0, 1000, mask);
-            break;
-        case Kind::UsacMagsac:
-            E = cv::findEssentialMat(p1, p2, K, cv::USAC_MAGSAC, 0.999, 1.0, 1000, mask);
-            break;
-        case Kind::UsacAccurate:
-            E = cv::findEssentialMat(p1, p2, K, cv::USAC_ACCURATE, 0.999, 1.0, 1000, mask);
-            break;
-        case Kind::UsacProsac:
-            E = cv::findEssentialMat(p1, p2, K, cv::USAC_PROSAC, 0.999, 1.0, 1000, mask);
-            break;
-        case Kind::Dropin:
-            E = cv::essential::findEssentialMatIter(p1, p2, K, cv::RANSAC, 0.999, 1.0, 1000, mask);
-            break;
-        case Kind::Ours: {
-            cv::essential::EssentialParams params = m.params;
-            params.seed = seed;
-            params.recoverPose = true;
-            E = cv::essential::findEssentialMatIter(p1, p2, K, params, mask, &report);
-            break;
-        }
-        }
-    } catch (const cv::Exception& e) {
-        std::fprintf(stderr, "hard_pairs: %s on %s threw: %s\n", m.label.c_str(), p.name.c_str(),
-                     e.err.c_str());
-        E.release();
-    }
-    out.cpuMs = essential_bench::threadCpuMs() - cpu0;
-    out.wallMs =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - wall0).count();
-    out.inliers = mask.empty() ? 0 : cv::countNonZero(mask);
-    if (E.rows == 3 && E.cols == 3) {
-        if (m.kind == Kind::Ours) {
-            out.posed = report.success && report.poseRecovered;
-            R = report.R;
-            t = report.t;
-        } else {
-            // The module's recoverPose on the estimator's inliers (no 50-baseline cut, so the
-            // sign of t is decided by every point in front).
-            cv::Mat Rm, tm, poseMask = mask.clone();
-            try {
-                cv::essential::recoverPoseIter(E, p1, p2, K, Rm, tm, poseMask);
-                R = cv::Matx33d(Rm);
-                t = cv::Vec3d(tm);
-                out.posed = true;
-            } catch (const cv::Exception&) {
-                out.posed = false;
-            }
-        }
-    }
+    out.cpuMs = r.cpuMs;
+    out.wallMs = r.wallMs;
+    out.inliers = r.inliers;
+    out.posed = r.posed;
     if (out.posed) {
-        out.rErr = essential_samples::rotationAngleDeg(R, p.R);
-        out.tErr = essential_samples::directionAngleDeg(t, p.t, 180.0);
+        out.rErr = essential_samples::rotationAngleDeg(r.R, p.R);
+        out.tErr = essential_samples::directionAngleDeg(r.t, p.t, 180.0);
         out.right = out.rErr < 5.0 && out.tErr < 10.0;
     }
     return out;

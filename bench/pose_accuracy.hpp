@@ -12,6 +12,8 @@
 #include "bench_common.hpp"
 #include "pose_auc.hpp"
 
+#include <opencv2/core.hpp>
+
 #include <algorithm>
 #include <ctime>
 #include <string>
@@ -27,6 +29,16 @@ struct PoseOutcome
     double ms = 0.0;
 
     double error() const { return std::max(rotErr, transErr); }
+};
+
+/** A pose estimate from one of the compared estimators, with the thread CPU time of its call(s).
+*/
+struct PoseEstimate
+{
+    bool ok = false;
+    cv::Matx33d R = cv::Matx33d::eye();
+    cv::Vec3d t = cv::Vec3d(0, 0, 0);
+    double ms = 0.0; //!< thread CPU time of the call(s)
 };
 
 using essential_test::poseAuc;

@@ -25,14 +25,6 @@
 
 namespace essential_bench {
 
-struct PoseEstimate
-{
-    bool ok = false;
-    cv::Matx33d R = cv::Matx33d::eye();
-    cv::Vec3d t = cv::Vec3d(0, 0, 0);
-    double ms = 0.0; //!< thread CPU time of the call(s)
-};
-
 template <typename Point>
 PoseEstimate runOurs(const std::vector<Point>& px1, const std::vector<Point>& px2,
                      const cv::Matx33d& K, double threshold, int maxIters)

@@ -2,12 +2,12 @@
 // See the LICENSE file at the top of the source tree.
 //
 // essential_pair: the relative pose of two calibrated images. FAST-9 corners and BRIEF descriptors
-// on an image pyramid, matching, then cv::essential::findEssentialMatIter; or the correspondences
-// of any other front end from a file (--matches). The same matches also go through
-// cv::findEssentialMat
-// + cv::recoverPose for comparison (unless --no-opencv). Prints text or one JSON object (--json),
-// optionally writes E, R, t and the inlier mask to a FileStorage file (--output) and draws the
-// matches and epipolar lines (--draw).
+// on an image pyramid (or SIFT with Lowe's ratio test, --detector sift), matching, then
+// cv::essential::findEssentialMatIter; or the correspondences of any other front end from a file
+// (--matches). The same matches also go through cv::findEssentialMat + cv::recoverPose for
+// comparison (unless --no-opencv). Prints text or one JSON object (--json), optionally writes E,
+// R, t and the inlier mask to a FileStorage file (--output) and draws the matches and epipolar
+// lines (--draw).
 
 #include "cli_camera.hpp"
 #include "cli_common.hpp"
@@ -58,7 +58,8 @@ std::string usage()
            "\n"
            "input:\n"
            "  IMG1 IMG2              two images (any format OpenCV reads: JPEG, PNG, ...); the\n"
-           "                         sample front end matches them (FAST-9 pyramid + BRIEF)\n"
+           "                         sample front end matches them (FAST-9 pyramid + BRIEF, or\n"
+           "                         SIFT + ratio test with --detector sift)\n"
            "  --matches FILE         correspondences of any front end instead, in pixels: CSV,\n"
            "                         one `x1,y1,x2,y2` per line (optional header line\n"
            "                         x1,y1,x2,y2; '#' comments), or an OpenCV FileStorage file\n"
@@ -76,7 +77,8 @@ std::string usage()
            "                         undistorted (cv::undistortPoints) before both estimators\n"
            "\n"
            "front end (images only):\n" +
-           essential_samples::frontEndHelp() + "\n" + essential_samples::estimatorHelp(false) +
+           essential_samples::detectorHelp() + essential_samples::frontEndHelp() + "\n" +
+           essential_samples::estimatorHelp(false) +
            "\n"
            "output:\n"
            "  --no-opencv            skip the comparison run with cv::findEssentialMat\n"
@@ -119,6 +121,8 @@ struct Options
 Options parseOptions(int argc, char** argv)
 {
     std::vector<essential_samples::OptionSpec> specs = essential_samples::estimatorOptionSpecs();
+    for (const essential_samples::OptionSpec& spec : essential_samples::detectorOptionSpecs())
+        specs.push_back(spec);
     for (const essential_samples::OptionSpec& spec : essential_samples::frontEndOptionSpecs())
         specs.push_back(spec);
     const std::vector<essential_samples::OptionSpec> own = {
@@ -138,7 +142,8 @@ Options parseOptions(int argc, char** argv)
     for (const essential_samples::GivenOption& option : line.options) {
         const std::string& value = option.value;
         if (essential_samples::applyEstimatorOption(option, false, options.estimator)) continue;
-        if (essential_samples::applyFrontEndOption(option, options.frontEnd)) {
+        if (essential_samples::applyDetectorOption(option, options.frontEnd) ||
+            essential_samples::applyFrontEndOption(option, options.frontEnd)) {
             frontEndGiven = true;
             continue;
         }
@@ -177,9 +182,10 @@ Options parseOptions(int argc, char** argv)
         options.image2 = line.positional[1];
     }
     if (!options.matchesFile.empty() && frontEndGiven)
-        fail("--descriptor, --matcher and --keep-fraction are front-end options; with --matches "
-             "there is no front end",
+        fail("--detector, --sift-features, --ratio, --descriptor, --matcher and --keep-fraction "
+             "are front-end options; with --matches there is no front end",
              2);
+    essential_samples::finishDetectorOptions(line.options, options.frontEnd);
     if (!options.draw.empty() && options.image1.empty())
         fail("--draw needs the two images (give IMG1 IMG2 with --matches)", 2);
     essential_samples::checkEstimatorCombination(options.estimator);
@@ -493,6 +499,7 @@ int run(int argc, char** argv)
         drawResult(options.draw, image1, image2, matches, mask, K, report.E, found);
 
     const bool fromFile = !options.matchesFile.empty();
+    const bool sift = frontParams.detector == essential_samples::Detector::Sift;
     const char* distanceName =
         features1.descriptor == essential_samples::Descriptor::Patch ? "L2" : "Hamming";
     const std::string budgetNote =
@@ -528,7 +535,7 @@ int run(int argc, char** argv)
             out["frontend"] = {{"matches_file", options.matchesFile}, {"matches", n}};
         else
             out["frontend"] = {
-                {"detector", "FAST-9 pyramid"},
+                {"detector", sift ? "SIFT" : "FAST-9 pyramid"},
                 {"levels", features1.levels},
                 {"descriptor", essential_samples::descriptorName(features1.descriptor)},
                 {"matcher", essential_samples::matcherName(frontParams.matcher)},
@@ -537,6 +544,11 @@ int run(int argc, char** argv)
                 {"keep_fraction", frontParams.keepFraction},
                 {"matches", n},
                 {"max_distance", matches.maxDistance}};
+        if (!fromFile && sift) {
+            out["frontend"]["sift_features"] = frontParams.siftFeatures;
+            out["frontend"]["ratio"] = frontParams.ratio;
+            out["frontend"]["ratio_test_passed"] = matches.ratioTestPassed;
+        }
         nlohmann::json ours = {{"solver", params.solver},
                                {"engine", essential_samples::engineName(estimator.engine)},
                                {"method", methodName},
@@ -620,6 +632,17 @@ int run(int argc, char** argv)
                 camera.distortion.cols);
     if (fromFile) {
         std::printf("matches: %d from %s\n", n, options.matchesFile.c_str());
+    } else if (sift) {
+        std::printf("keypoints: %zu in image 1, %zu in image 2 (SIFT, %d octaves, %s)\n",
+                    features1.keypoints.size(), features2.keypoints.size(), features1.levels,
+                    frontParams.siftFeatures > 0
+                        ? cv::format("the %d strongest", frontParams.siftFeatures).c_str()
+                        : "all");
+        std::printf("matches: %d (%d of %d pass the ratio test %g; best %.0f%% of these by L2 "
+                    "distance, up to %g; matcher %s)\n",
+                    n, matches.ratioTestPassed, matches.candidates, frontParams.ratio,
+                    100.0 * frontParams.keepFraction, static_cast<double>(matches.maxDistance),
+                    essential_samples::matcherName(frontParams.matcher));
     } else {
         std::printf("corners: %zu in image 1, %zu in image 2 (FAST-9 on %d pyramid levels, %s)\n",
                     features1.keypoints.size(), features2.keypoints.size(), features1.levels,

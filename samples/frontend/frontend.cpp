@@ -33,6 +33,16 @@ void checkParams(const FrontEndParams& params)
         throw std::invalid_argument("front end: minLevelSize must exceed twice the border");
     if (!(params.keepFraction > 0.0 && params.keepFraction <= 1.0))
         throw std::invalid_argument("front end: keepFraction must be in (0, 1]");
+    if (params.siftFeatures < 0)
+        throw std::invalid_argument("front end: siftFeatures must be >= 0 (0: all)");
+    if (!(params.ratio > 0.0 && params.ratio <= 1.0))
+        throw std::invalid_argument("front end: ratio must be in (0, 1]");
+    if (params.detector == Detector::Fast9Pyramid && params.descriptor == Descriptor::Sift)
+        throw std::invalid_argument("front end: the SIFT descriptor needs Detector::Sift");
+    if (params.detector == Detector::Sift && params.descriptor != Descriptor::Sift &&
+        params.descriptor != FrontEndParams().descriptor)
+        throw std::invalid_argument("front end: Detector::Sift computes SIFT descriptors; the "
+                                    "descriptor must be Sift or the default");
 }
 
 // Orientation of the intensity centroid of the disc of radius kOrientationRadius around (x, y),
@@ -103,8 +113,8 @@ void describePatches(const cv::Mat& levelImage, std::vector<cv::KeyPoint>& keypo
 }
 
 // Matcher::Grid: keeps, in each cell of a kGridCells x kGridCells grid over the image, the
-// kGridCorners / kGridCells^2 corners of highest FAST score (ties: detection order), whatever their
-// level.
+// kGridCorners / kGridCells^2 corners of highest response (the FAST score, or SIFT's contrast;
+// ties: detection order), whatever their level.
 void keepStrongestPerCell(cv::Size imageSize, Features& features)
 {
     const int perCell = kGridCorners / (kGridCells * kGridCells);
@@ -160,14 +170,78 @@ std::vector<cv::DMatch> flannNearest(const Features& features1, const Features& 
     return nearest;
 }
 
+// Detector::Sift: cv::SIFT's keypoints and descriptors of the grey image (then Matcher::Grid's
+// selection, as for the FAST corners).
+Features detectSift(const cv::Mat& gray, const FrontEndParams& params)
+{
+    Features features;
+    features.descriptor = Descriptor::Sift;
+    const cv::Ptr<cv::SIFT> sift = cv::SIFT::create(params.siftFeatures);
+    sift->detectAndCompute(gray, cv::noArray(), features.keypoints, features.descriptors);
+    features.cornersDetected = static_cast<int>(features.keypoints.size());
+    if (!features.keypoints.empty()) {
+        // cv::SIFT packs the octave into the low byte of `octave` (signed; -1: doubled image).
+        int lowest = 255, highest = -255;
+        for (const cv::KeyPoint& kp : features.keypoints) {
+            const int octave = static_cast<signed char>(kp.octave & 255);
+            lowest = std::min(lowest, octave);
+            highest = std::max(highest, octave);
+        }
+        features.levels = highest - lowest + 1;
+    }
+    if (params.matcher == Matcher::Grid) keepStrongestPerCell(gray.size(), features);
+    return features;
+}
+
+// SIFT descriptors: the two nearest neighbours in features1 of every descriptor of features2 (L2;
+// brute force, or randomised k-d trees with Matcher::Flann), and the nearest of those that pass
+// Lowe's ratio test. `candidates`: the descriptors of features2 that got two neighbours.
+std::vector<cv::DMatch> ratioTestMatches(const Features& features1, const Features& features2,
+                                         const FrontEndParams& params, int& candidates)
+{
+    std::vector<std::vector<cv::DMatch>> knn;
+    if (params.matcher == Matcher::Flann) {
+        cv::FlannBasedMatcher matcher(cv::makePtr<cv::flann::KDTreeIndexParams>(4),
+                                      cv::makePtr<cv::flann::SearchParams>(32));
+        matcher.knnMatch(features2.descriptors, features1.descriptors, knn, 2);
+    } else {
+        cv::BFMatcher matcher(cv::NORM_L2, false);
+        matcher.knnMatch(features2.descriptors, features1.descriptors, knn, 2);
+    }
+    candidates = 0;
+    std::vector<cv::DMatch> kept;
+    kept.reserve(knn.size());
+    for (const std::vector<cv::DMatch>& neighbours : knn) {
+        if (neighbours.size() < 2) continue;
+        ++candidates;
+        if (neighbours[0].distance < params.ratio * neighbours[1].distance)
+            kept.push_back(neighbours[0]);
+    }
+    return kept;
+}
+
+const NamedValue<Detector> kDetectorNames[] = {{"fast", Detector::Fast9Pyramid},
+                                               {"sift", Detector::Sift}};
+
 const NamedValue<Matcher> kMatcherNames[] = {
     {"brute-force", Matcher::BruteForce}, {"grid", Matcher::Grid}, {"flann", Matcher::Flann}};
 
 const NamedValue<Descriptor> kDescriptorNames[] = {{"brief", Descriptor::UprightBrief},
                                                    {"orb", Descriptor::RotatedBrief},
-                                                   {"patch", Descriptor::Patch}};
+                                                   {"patch", Descriptor::Patch},
+                                                   {"sift", Descriptor::Sift}};
 
 } // namespace
+
+const char* detectorName(Detector detector)
+{
+    return nameOfValue(kDetectorNames, detector, "?");
+}
+
+bool parseDetector(const std::string& name, Detector& detector)
+{
+    return parseNamedValue(kDetectorNames, name, detector);
+}
 
 const char* matcherName(Matcher matcher)
 {
@@ -219,6 +293,7 @@ Features detectAndDescribe(const cv::Mat& image, const FrontEndParams& params)
         cv::cvtColor(image, gray, cv::COLOR_BGRA2GRAY);
     else
         throw std::invalid_argument("front end: expected a 1-, 3- or 4-channel image");
+    if (params.detector == Detector::Sift) return detectSift(gray, params);
 
     // One level of ORB, used as a descriptor extractor only: the keypoints come from FAST on our
     // own pyramid, each level described on its own image.
@@ -294,16 +369,22 @@ Matches matchFeatures(const Features& features1, const Features& features2,
         throw std::invalid_argument("front end: the two feature sets hold different descriptors");
     if (features1.keypoints.empty() || features2.keypoints.empty()) return result;
 
-    // Every corner of image 2 against the corners of image 1; the nearest wins, however far.
     std::vector<cv::DMatch> matches;
-    if (params.matcher == Matcher::Flann) {
-        matches = flannNearest(features1, features2);
+    if (features1.descriptor == Descriptor::Sift) {
+        // SIFT: the nearest of two neighbours, when clearly nearer than the second.
+        matches = ratioTestMatches(features1, features2, params, result.candidates);
     } else {
-        cv::BFMatcher matcher(
-            features1.descriptor == Descriptor::Patch ? cv::NORM_L2 : cv::NORM_HAMMING, false);
-        matcher.match(features2.descriptors, features1.descriptors, matches);
+        // Every corner of image 2 against the corners of image 1; the nearest wins, however far.
+        if (params.matcher == Matcher::Flann) {
+            matches = flannNearest(features1, features2);
+        } else {
+            cv::BFMatcher matcher(
+                features1.descriptor == Descriptor::Patch ? cv::NORM_L2 : cv::NORM_HAMMING, false);
+            matcher.match(features2.descriptors, features1.descriptors, matches);
+        }
+        result.candidates = static_cast<int>(matches.size());
     }
-    result.candidates = static_cast<int>(matches.size());
+    result.ratioTestPassed = static_cast<int>(matches.size());
 
     // The best fraction by distance (stable, so that ties keep the order of the corners).
     std::stable_sort(matches.begin(), matches.end(), [](const cv::DMatch& a, const cv::DMatch& b) {

@@ -187,7 +187,7 @@ inline std::string estimatorHelp(bool lists)
                 "                         (" +
                 solvers +
                 ") or mixes such as gn+nister or\n"
-                "                         gn:3+nister:1 (default gn+nister)\n"
+                "                         gn:3+nister:1 (default nister)\n"
                 "  --budget-ms LIST       time budgets in milliseconds, comma separated, 0 for\n"
                 "                         none (default 0).\n"
                 "                         ";
@@ -195,7 +195,7 @@ inline std::string estimatorHelp(bool lists)
         help += "  --solver NAME          a registered solver (" + solvers +
                 ")\n"
                 "                         or a mix such as gn+nister or gn:3+nister:1 (default\n"
-                "                         gn+nister)\n"
+                "                         nister)\n"
                 "  --budget-ms T          time budget in milliseconds, 0 for none (default 0).\n"
                 "                         ";
     help += "With a budget the search stops when it is spent or at\n"

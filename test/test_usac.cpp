@@ -308,10 +308,14 @@ TEST(Sprt, SamePoseFewerPointsScored)
         EXPECT_NEAR(on.inliers, off.inliers, 5);
         EXPECT_EQ(off.sprtRejections, 0);
         EXPECT_GT(on.sprtRejections, 0);
-        // Per hypothesis: hundreds of points without SPRT, a few dozen with it.
+        // Per hypothesis: nearly all 1000 points without SPRT, a few hundred at most with it (the
+        // accepted models are scored in full). Over these seeds the ratio is 3.4 to 4.8 with the
+        // default nister (more roots per sample pass cheirality, each good one scored in full)
+        // and above 4 with gn+nister; a factor 3 leaves room for the seed and still fails when
+        // SPRT rejects nothing early.
         const double perOff = double(off.pointsScored) / off.hypothesesScored;
         const double perOn = double(on.pointsScored) / on.hypothesesScored;
-        EXPECT_LT(perOn * 4, perOff) << perOn << " vs " << perOff;
+        EXPECT_LT(perOn * 3, perOff) << perOn << " vs " << perOff;
         EXPECT_LE(off.pointsScored, int64_t(off.hypothesesScored) * 1000 + 1000 * 20);
     }
 }

@@ -252,16 +252,28 @@ Mat estimate(const Problem& problem, const EssentialParams& params, OutputArray 
     if (hasTimeBudget(params))
         settings.deadline =
             ransac::Deadline::after(params.timeBudgetMs - msSince(start) - finishingReserveMs(n));
-    ransac::SearchResult found;
-    if (params.engine == ENGINE_OPENCV)
-        found = ransac::searchOpenCvLoop(problem, *solver, rng, settings,
-                                         params.score == SCORE_METHOD_LMEDS ? LMEDS : RANSAC);
-    else if (params.engine == ENGINE_PREEMPTIVE)
-        found = ransac::searchPreemptive(problem, *solver, rng, settings);
-    else if (params.score == SCORE_METHOD_LMEDS)
-        found = ransac::searchLmeds(problem, *solver, rng, settings);
-    else
-        found = ransac::searchMsac(problem, *solver, rng, settings);
+    auto search = [&]() {
+        if (params.engine == ENGINE_OPENCV)
+            return ransac::searchOpenCvLoop(problem, *solver, rng, settings,
+                                            params.score == SCORE_METHOD_LMEDS ? LMEDS : RANSAC);
+        if (params.engine == ENGINE_PREEMPTIVE)
+            return ransac::searchPreemptive(problem, *solver, rng, settings);
+        if (params.score == SCORE_METHOD_LMEDS)
+            return ransac::searchLmeds(problem, *solver, rng, settings);
+        return ransac::searchMsac(problem, *solver, rng, settings);
+    };
+    ransac::SearchResult found = search();
+    if ((!found.found || found.inliers <= kMinimalSample) && params.engine != ENGINE_OPENCV) {
+        // No sample put in front of both cameras gave a model with support beyond its own sample:
+        // the data may contradict cheirality (points behind a camera, as OpenCV's own synthetic
+        // test makes with unrestricted random rotations; with 6 such points every sample mixes
+        // points in front and behind, and only wrong roots pass). The search runs again without
+        // the check, as cv::findEssentialMat would. On photographs a search nearly always finds a
+        // model with more support than that, and this second pass is rare.
+        settings.sampleCheirality = false;
+        settings.setSolverThreshold = false;
+        found = search();
+    }
     rep.iterations = found.iterations;
     rep.hypothesesGenerated = found.hypothesesGenerated;
     rep.hypothesesConverged = found.hypothesesConverged;

@@ -9,6 +9,7 @@
 #include "ransac/napsac_sampler.hpp"
 #include "ransac/prosac_sampler.hpp"
 #include "ransac/uniform_sampler.hpp"
+#include "solvers/sample_cheirality.hpp"
 
 #include <vector>
 
@@ -33,18 +34,23 @@ struct SampleBuffer
     NapsacSampler* napsac = nullptr;
     int localEvery = 1;
     int drawn = 0;
+    /** Keep only the solutions that put the sample in front of both cameras. Only a minimal
+    sample can be expected to be all inliers; the larger samples of robust solvers hold outliers
+    by design, whose depth signs say nothing about the model. */
+    bool requireInFront;
 
     explicit SampleBuffer(const EssentialSolver& solver)
         : sampleSize(solver.sampleSize()), indices(static_cast<size_t>(sampleSize)),
           x1(static_cast<size_t>(sampleSize)), x2(static_cast<size_t>(sampleSize)),
-          solutions(static_cast<size_t>(solver.maxSolutions()))
+          solutions(static_cast<size_t>(solver.maxSolutions())), requireInFront(sampleSize == 5)
     {
     }
 
     /** Draws a sample (uniform, or PROSAC's) and runs the solver on it; returns the number of
-    solutions. A sample with two coincident points in either view is degenerate (it constrains E
-    less than its size says, and all-identical input would otherwise "fit" anything): it is not
-    solved. */
+    solutions that put the sample in front of both cameras (solvers::essentialSampleIsInFront),
+    moved to the front of `solutions`. A sample with two coincident points in either view is
+    degenerate (it constrains E less than its size says, and all-identical input would otherwise
+    "fit" anything): it is not solved. */
     int drawAndSolve(const Problem& problem, EssentialSolver& solver, RNG& rng)
     {
         const bool local =
@@ -61,7 +67,17 @@ struct SampleBuffer
         }
         if (hasCoincidentPoints()) return 0;
         const int count = solver.solve(x1.data(), x2.data(), rng, solutions.data());
-        return std::max(0, std::min(count, static_cast<int>(solutions.size())));
+        return keepSolved(count);
+    }
+
+    /** The solver's count clamped to the room in `solutions`, then, with requireInFront, reduced
+to the solutions in front (moved to the front of `solutions`). */
+    int keepSolved(int count)
+    {
+        count = std::max(0, std::min(count, static_cast<int>(solutions.size())));
+        return requireInFront ? solvers::keepSolutionsInFront(solutions.data(), count, x1.data(),
+                                                              x2.data(), sampleSize)
+                              : count;
     }
 
     /** Normalised points closer than 1e-9 (about 1e-6 pixel) count as the same point. */

@@ -52,6 +52,15 @@ struct SearchSettings
     budget of EssentialParams::sampleBudget = BUDGET_OPENCV_TIME (ransac/opencv_time_budget.hpp).
     */
     int minSampleCap = 0;
+    /** Adaptive MSAC, LMedS and preemptive: keep only the solutions of a minimal (5-point) sample
+    under one of whose poses the sample lies in front of both cameras
+    (solvers::essentialSampleIsInFront), before they are scored. Larger samples (robust) may hold
+    outliers by design and are not checked. */
+    bool sampleCheirality = true;
+    /** Adaptive MSAC and preemptive: pass the problem's threshold to the solver
+    (EssentialSolver::setThreshold, once per estimate); off for a second search of the same
+    estimate. */
+    bool setSolverThreshold = true;
 };
 
 struct SearchResult

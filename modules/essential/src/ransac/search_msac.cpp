@@ -1,6 +1,7 @@
 // This file is part of opencv_essential, licensed under the Apache License, Version 2.0.
 // See the LICENSE file at the top of the source tree.
 
+#include "ransac/candidate_pool.hpp"
 #include "ransac/msac_score.hpp"
 #include "ransac/prosac_sampler.hpp"
 #include "ransac/sample_buffer.hpp"
@@ -58,6 +59,11 @@ inliers from 6.9 to 30.7 ms and 25% from about 8 to 77 ms for a reliability of 0
 lower. */
 constexpr double kExtendedConfidence = 0.6321205588285577;
 
+/** Runners-up costing more than this many times the best model are not kept (CandidatePool):
+a model of the true basin drawn from a noisy sample costs up to about 1.5 times the polished wrong
+one on the real pairs where the pool matters. */
+constexpr double kPoolCostFactor = 2.0;
+
 } // namespace
 
 SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rng,
@@ -66,8 +72,10 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
     SearchResult result;
     result.threshold = problem.threshold;
     const int n = problem.size();
-    solver.setThreshold(problem.threshold); // once per estimate (EssentialSolver)
+    if (settings.setSolverThreshold)
+        solver.setThreshold(problem.threshold); // once per estimate (EssentialSolver)
     SampleBuffer buffer(solver);
+    buffer.requireInFront = buffer.requireInFront && settings.sampleCheirality;
     if (n < buffer.sampleSize) return result;
     // The sample cap: from the solver's rate at any pose until there is a model, then from its
     // rate at the model's pose (EssentialSolver::hitProbabilityAt).
@@ -112,9 +120,11 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
     // The inner samples' own storage and generator (seeded without advancing the search's, so that
     // the search draws the same samples whatever LO does).
     SampleBuffer inner(solver);
+    inner.requireInFront = buffer.requireInFront;
     RNG innerRng(rng.state ^ 0x5851f42d4c957f2dULL);
 
     Score best;
+    CandidatePool pool;
     // Until there is a model, the confidence cap: a search that has solved no sample by then has
     // degenerate data (coincident or collinear points), and the extended budget (settings.
     // minSampleCap) is only for data whose best model is weak, decided with the first model.
@@ -139,9 +149,8 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
                 inner.x2[i] = problem.p2[chosen[inner.indices[i]]];
             }
             if (inner.hasCoincidentPoints()) continue;
-            const int count = std::max(0, std::min(solver.solve(inner.x1.data(), inner.x2.data(),
-                                                                innerRng, inner.solutions.data()),
-                                                   static_cast<int>(inner.solutions.size())));
+            const int count = inner.keepSolved(
+                solver.solve(inner.x1.data(), inner.x2.data(), innerRng, inner.solutions.data()));
             ++result.hypothesesGenerated;
             result.hypothesesConverged += count;
             result.hypothesesScored += count;
@@ -156,16 +165,10 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
         }
     };
 
-    bool innerPending = false; // the best model waits for its inner samples (kInnerMinSamples)
-    auto localOptimise = [&]() {
-        innerPending = false;
-        if (double(best.inliers) / n < kInnerMaxRatio) {
-            if (result.iterations >= kInnerMinSamples)
-                innerSampling();
-            else
-                innerPending = true;
-        }
-        inlierMask(result.E, problem, settings.loBand * problem.threshold, mask.data());
+    // IRLS from `start` on its inliers (within loBand thresholds; a random subset of
+    // loSampleSize of them when set), scored on all points: the local optimisation of a model.
+    auto polishFrom = [&](const Matx33d& start, Matx33d& polished, Score& score) {
+        inlierMask(start, problem, settings.loBand * problem.threshold, mask.data());
         chosen.clear();
         for (int i = 0; i < n; ++i)
             if (mask[i]) chosen.push_back(i);
@@ -175,7 +178,7 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
                 std::swap(chosen[i], chosen[rng.uniform(i, k)]);
             k = settings.loSampleSize;
         }
-        if (k < 5) return; // IRLS fits 5 degrees of freedom
+        if (k < 5) return false; // IRLS fits 5 degrees of freedom
         std::vector<Point2d> a(static_cast<size_t>(k)), b(static_cast<size_t>(k));
         for (int i = 0; i < k; ++i) {
             a[i] = problem.p1[chosen[i]];
@@ -186,14 +189,30 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
         refine::IrlsSettings irls;
         irls.maxIterations = settings.loIterations;
         ++result.localOptimisations;
-        const refine::IrlsResult polished =
-            refine::refineIrls(subset, result.E, settings.loScale, irls);
-        if (!polished.improved) return;
-        const Score s = scoreMsac(polished.E, *scoring, best.cost);
-        result.pointsScored += s.scored;
-        if (s.cost < best.cost && s.inliers >= buffer.sampleSize) {
-            best = s;
-            result.E = polished.E;
+        const refine::IrlsResult refined =
+            refine::refineIrls(subset, start, settings.loScale, irls);
+        if (!refined.improved) return false;
+        score = scoreMsac(refined.E, *scoring, best.cost);
+        result.pointsScored += score.scored;
+        polished = refined.E;
+        return true;
+    };
+
+    bool innerPending = false; // the best model waits for its inner samples (kInnerMinSamples)
+    auto localOptimise = [&]() {
+        innerPending = false;
+        if (double(best.inliers) / n < kInnerMaxRatio) {
+            if (result.iterations >= kInnerMinSamples)
+                innerSampling();
+            else
+                innerPending = true;
+        }
+        Matx33d polished;
+        Score ps;
+        if (polishFrom(result.E, polished, ps) && ps.cost < best.cost &&
+            ps.inliers >= buffer.sampleSize) {
+            best = ps;
+            result.E = polished;
             ++result.localOptimisationsKept;
         }
     };
@@ -291,9 +310,13 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
         for (int h = 0; h < count; ++h) {
             ++result.hypothesesScored;
             Score s;
+            // Scored exactly up to the pool's entry cost (within kPoolCostFactor of the best), so
+            // that near-best models of another basin are kept (CandidatePool).
+            const double bound =
+                lo ? std::min(pool.entryCost(), kPoolCostFactor * best.cost) : best.cost;
             if (sprt.active()) {
                 bool rejected = false;
-                s = scoreMsacSprt(buffer.solutions[h], *scoring, best.cost, sprt.test(), rejected);
+                s = scoreMsacSprt(buffer.solutions[h], *scoring, bound, sprt.test(), rejected);
                 result.pointsScored += s.scored;
                 if (rejected) {
                     ++result.sprtRejections;
@@ -302,9 +325,11 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
                     continue;
                 }
             } else {
-                s = scoreMsac(buffer.solutions[h], *scoring, best.cost);
+                s = scoreMsac(buffer.solutions[h], *scoring, bound);
                 result.pointsScored += s.scored;
             }
+            if (lo && s.cost < bound && s.inliers >= buffer.sampleSize)
+                pool.offer(buffer.solutions[h], s.cost);
             if (s.cost < best.cost && s.inliers >= buffer.sampleSize) {
                 best = s;
                 result.E = buffer.solutions[h];
@@ -314,6 +339,23 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
                     sprt.accepted(double(best.inliers) / n,
                                   double(result.hypothesesConverged) / result.hypothesesGenerated);
                 needed = samplesNeeded();
+            }
+        }
+    }
+    // The runners-up of other basins, polished: one may descend below the winner.
+    if (lo && result.found) {
+        const Matx33d winner = result.E * (1.0 / std::sqrt(result.E.dot(result.E)));
+        for (int i = 0; i < pool.size(); ++i) {
+            if (CandidatePool::same(pool[i].E, winner) ||
+                !(pool[i].cost < kPoolCostFactor * best.cost))
+                continue;
+            Matx33d polished;
+            Score ps;
+            if (polishFrom(pool[i].E, polished, ps) && ps.cost < best.cost &&
+                ps.inliers >= buffer.sampleSize) {
+                best = ps;
+                result.E = polished;
+                ++result.localOptimisationsKept;
             }
         }
     }

@@ -51,13 +51,15 @@ SearchResult searchPreemptive(const Problem& problem, EssentialSolver& solver, R
     SearchResult result;
     result.threshold = problem.threshold;
     const int n = problem.size();
-    solver.setThreshold(problem.threshold); // once per estimate (EssentialSolver)
+    if (settings.setSolverThreshold)
+        solver.setThreshold(problem.threshold); // once per estimate (EssentialSolver)
     // A fixed number of hypotheses (or a time budget) and no stopping rule: what counts is how many
     // hypotheses the time buys, not the rate at wide rotations, so iterative solvers run as they
     // did before their start sequence: from R = I only, every root returned (docs/SOLVERS.md).
     if (auto* iterative = dynamic_cast<solvers::IdentityStartOnly*>(&solver))
         iterative->useIdentityStartOnly(false);
     SampleBuffer buffer(solver);
+    buffer.requireInFront = buffer.requireInFront && settings.sampleCheirality;
     if (n < buffer.sampleSize) return result;
     const int B = std::max(1, settings.preemptiveBlockSize);
     const Problem data = shuffledCopy(problem, rng);

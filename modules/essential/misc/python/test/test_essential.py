@@ -91,7 +91,7 @@ class essential_test(NewOpenCVTests):
     def test_params_overload_returns_a_report(self):
         p1, p2, K, R, t = two_view_scene()
         params = cv.essential.EssentialParams()
-        self.assertEqual(params.solver, "gn+nister")
+        self.assertEqual(params.solver, "nister")
         self.assertEqual(params.maxIterations, 1000)
         self.assertEqual(params.score, cv.SCORE_METHOD_MSAC)
         self.assertEqual(params.engine, cv.essential.ENGINE_ADAPTIVE)

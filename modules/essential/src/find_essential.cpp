@@ -17,6 +17,7 @@
 #include "ransac/msac_score.hpp"
 #include "ransac/opencv_time_budget.hpp"
 #include "ransac/plane_parallax.hpp"
+#include "ransac/sample_buffer.hpp"
 #include "ransac/search.hpp"
 #include "ransac/support_test.hpp"
 #include "refine/final_refinement.hpp"
@@ -263,7 +264,8 @@ Mat estimate(const Problem& problem, const EssentialParams& params, OutputArray 
         return ransac::searchMsac(problem, *solver, rng, settings);
     };
     ransac::SearchResult found = search();
-    if ((!found.found || found.inliers <= kMinimalSample) && params.engine != ENGINE_OPENCV) {
+    if ((!found.found || found.inliers <= kMinimalSample) && params.engine != ENGINE_OPENCV &&
+        ransac::SampleBuffer::checksCheirality(*solver)) {
         // No sample put in front of both cameras gave a model with support beyond its own sample:
         // the data may contradict cheirality (points behind a camera, as OpenCV's own synthetic
         // test makes with unrestricted random rotations; with 6 such points every sample mixes

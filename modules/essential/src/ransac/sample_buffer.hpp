@@ -34,17 +34,23 @@ struct SampleBuffer
     NapsacSampler* napsac = nullptr;
     int localEvery = 1;
     int drawn = 0;
-    /** Keep only the solutions that put the sample in front of both cameras. Only a minimal
-    sample can be expected to be all inliers; the larger samples of robust solvers hold outliers
-    by design, whose depth signs say nothing about the model. */
+    /** Keep only the solutions that put the sample in front of both cameras: when asked
+    (SearchSettings::sampleCheirality) and the sample is minimal. Only a minimal sample can be
+    expected to be all inliers; the larger samples of robust solvers hold outliers by design, whose
+    depth signs say nothing about the model. */
     bool requireInFront;
 
-    explicit SampleBuffer(const EssentialSolver& solver)
+    SampleBuffer(const EssentialSolver& solver, bool checkCheirality)
         : sampleSize(solver.sampleSize()), indices(static_cast<size_t>(sampleSize)),
           x1(static_cast<size_t>(sampleSize)), x2(static_cast<size_t>(sampleSize)),
-          solutions(static_cast<size_t>(solver.maxSolutions())), requireInFront(sampleSize == 5)
+          solutions(static_cast<size_t>(solver.maxSolutions())),
+          requireInFront(checkCheirality && checksCheirality(solver))
     {
     }
+
+    /** Whether the searches check cheirality on this solver's samples when asked: only on minimal
+    (5-point) ones. */
+    static bool checksCheirality(const EssentialSolver& solver) { return solver.sampleSize() == 5; }
 
     /** Draws a sample (uniform, or PROSAC's) and runs the solver on it; returns the number of
     solutions that put the sample in front of both cameras (solvers::essentialSampleIsInFront),

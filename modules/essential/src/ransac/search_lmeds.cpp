@@ -37,8 +37,7 @@ SearchResult searchLmeds(const Problem& problem, EssentialSolver& solver, RNG& r
     SearchResult result;
     const int n = problem.size();
     // No setThreshold(): LMedS has no inlier threshold of its own (it derives one from the data).
-    SampleBuffer buffer(solver);
-    buffer.requireInFront = buffer.requireInFront && settings.sampleCheirality;
+    SampleBuffer buffer(solver, settings.sampleCheirality);
     if (n < buffer.sampleSize) return result;
 
     // OpenCV's LMeDS assumes 45% outliers to fix the number of samples (at least 3).

@@ -74,8 +74,7 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
     const int n = problem.size();
     if (settings.setSolverThreshold)
         solver.setThreshold(problem.threshold); // once per estimate (EssentialSolver)
-    SampleBuffer buffer(solver);
-    buffer.requireInFront = buffer.requireInFront && settings.sampleCheirality;
+    SampleBuffer buffer(solver, settings.sampleCheirality);
     if (n < buffer.sampleSize) return result;
     // The sample cap: from the solver's rate at any pose until there is a model, then from its
     // rate at the model's pose (EssentialSolver::hitProbabilityAt).
@@ -119,8 +118,7 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
     if (lo) chosen.reserve(static_cast<size_t>(n));
     // The inner samples' own storage and generator (seeded without advancing the search's, so that
     // the search draws the same samples whatever LO does).
-    SampleBuffer inner(solver);
-    inner.requireInFront = buffer.requireInFront;
+    SampleBuffer inner(solver, settings.sampleCheirality);
     RNG innerRng(rng.state ^ 0x5851f42d4c957f2dULL);
 
     Score best;

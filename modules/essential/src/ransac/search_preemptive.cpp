@@ -58,8 +58,7 @@ SearchResult searchPreemptive(const Problem& problem, EssentialSolver& solver, R
     // did before their start sequence: from R = I only, every root returned (docs/SOLVERS.md).
     if (auto* iterative = dynamic_cast<solvers::IdentityStartOnly*>(&solver))
         iterative->useIdentityStartOnly(false);
-    SampleBuffer buffer(solver);
-    buffer.requireInFront = buffer.requireInFront && settings.sampleCheirality;
+    SampleBuffer buffer(solver, settings.sampleCheirality);
     if (n < buffer.sampleSize) return result;
     const int B = std::max(1, settings.preemptiveBlockSize);
     const Problem data = shuffledCopy(problem, rng);

@@ -48,6 +48,19 @@ inline void depthSigns(const Eigen::Matrix3d& R, const Eigen::Vector3d& t, const
     }
 }
 
+/** Whether one of the four poses (R, +-t), (R', +-t), with R' = (2 t t^T - I) R the twisted pair
+and t a unit vector, puts every decided sample point in front of both cameras. */
+inline bool anyPoseInFront(const Eigen::Matrix3d& R, const Eigen::Vector3d& t, const Point2d* x1,
+                           const Point2d* x2, int n)
+{
+    bool front, back;
+    depthSigns(R, t, x1, x2, n, front, back);
+    if (front || back) return true;
+    const Eigen::Matrix3d twisted = (2.0 * t * t.transpose() - Eigen::Matrix3d::Identity()) * R;
+    depthSigns(twisted, t, x1, x2, n, front, back);
+    return front || back;
+}
+
 } // namespace detail
 
 /** Whether one of the four poses (R, +-t), (R', +-t) of E = [t]x R, with R' = (2 t t^T - I) R the
@@ -56,14 +69,7 @@ both cameras. About 0.1 us for five points. */
 inline bool sampleIsInFront(const geometry::EssentialPose& pose, const Point2d* x1,
                             const Point2d* x2, int n)
 {
-    const Eigen::Vector3d t = pose.t();
-    bool front, back;
-    detail::depthSigns(pose.R, t, x1, x2, n, front, back);
-    if (front || back) return true;
-    const Eigen::Matrix3d twisted =
-        (2.0 * t * t.transpose() - Eigen::Matrix3d::Identity()) * pose.R;
-    detail::depthSigns(twisted, t, x1, x2, n, front, back);
-    return front || back;
+    return detail::anyPoseInFront(pose.R, pose.t(), x1, x2, n);
 }
 
 /** Whether one of the four poses of the essential matrix E (any scale and sign) puts every sample
@@ -89,7 +95,8 @@ inline bool essentialSampleIsInFront(const Matx33d& E, const Point2d* x1, const 
     t /= tn;
     // With E / s = [t]x R (s = |E|_F / sqrt(2), up to sign), R = cof(E / s) - [t]x (E / s): the
     // cofactor matrix of [t]x R is t t^T R and -[t]x [t]x R = (I - t t^T) R. A sign flip of E
-    // gives the twisted rotation, which sampleIsInFront tries as well.
+    // gives the twisted rotation, which anyPoseInFront tries as well. A closed form rather than
+    // geometry::decomposeEssential's SVD, because this runs on every root before it is scored.
     const Eigen::Matrix3d es = e * (std::sqrt(2.0) / en);
     Eigen::Matrix3d cof;
     cof.row(0) = es.row(1).cross(es.row(2));
@@ -97,13 +104,7 @@ inline bool essentialSampleIsInFront(const Matx33d& E, const Point2d* x1, const 
     cof.row(2) = es.row(0).cross(es.row(1));
     Eigen::Matrix3d tx;
     tx << 0.0, -t.z(), t.y(), t.z(), 0.0, -t.x(), -t.y(), t.x(), 0.0;
-    const Eigen::Matrix3d R = cof - tx * es;
-    bool front, back;
-    detail::depthSigns(R, t, x1, x2, n, front, back);
-    if (front || back) return true;
-    const Eigen::Matrix3d twisted = (2.0 * t * t.transpose() - Eigen::Matrix3d::Identity()) * R;
-    detail::depthSigns(twisted, t, x1, x2, n, front, back);
-    return front || back;
+    return detail::anyPoseInFront(cof - tx * es, t, x1, x2, n);
 }
 
 /** Keeps, in order, the first `count` solutions that pass essentialSampleIsInFront on the sample;

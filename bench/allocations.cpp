@@ -73,22 +73,25 @@ void* operator new[](std::size_t size, const std::nothrow_t&) noexcept
     }
 }
 
-void operator delete(void* p) noexcept
+// GCC 14 inlines these into the std::vector code of main and then, seeing the allocation and
+// the free in one function, warns of a free at an offset (-Wfree-nonheap-object, a false
+// positive); out of line, each operator is what the replaced global one is: a call.
+[[gnu::noinline]] void operator delete(void* p) noexcept
 {
     std::free(p);
 }
 
-void operator delete[](void* p) noexcept
+[[gnu::noinline]] void operator delete[](void* p) noexcept
 {
     std::free(p);
 }
 
-void operator delete(void* p, std::size_t) noexcept
+[[gnu::noinline]] void operator delete(void* p, std::size_t) noexcept
 {
     std::free(p);
 }
 
-void operator delete[](void* p, std::size_t) noexcept
+[[gnu::noinline]] void operator delete[](void* p, std::size_t) noexcept
 {
     std::free(p);
 }

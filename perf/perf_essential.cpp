@@ -58,7 +58,8 @@ void BM_Solver(benchmark::State& state, const char* name)
     for (auto _ : state) {
         const auto& p = samples[i++ % samples.size()];
         solved += solver->solve(p.x1.data(), p.x2.data(), rng, E.data());
-        benchmark::DoNotOptimize(E.data());
+        cv::Matx33d* out = E.data();
+        benchmark::DoNotOptimize(out);
     }
     state.counters["solutions_per_call"] = double(solved) / double(state.iterations());
 }
@@ -85,7 +86,8 @@ void BM_ScoreMsac(benchmark::State& state)
     cv::Matx33d E;
     const cv::essential::Problem problem = scoringProblem(int(state.range(0)), E);
     for (auto _ : state)
-        benchmark::DoNotOptimize(cv::essential::ransac::scoreMsac(E, problem));
+        auto score = cv::essential::ransac::scoreMsac(E, problem);
+        benchmark::DoNotOptimize(score);
     state.counters["ns_per_point"] = nsPer(double(state.iterations()) * double(state.range(0)));
 }
 BENCHMARK(BM_ScoreMsac)->Arg(500)->Arg(1000)->Arg(4000);
@@ -100,8 +102,8 @@ void BM_ScoreSprt(benchmark::State& state)
     test.logOut = 0.1;
     bool rejected = false;
     for (auto _ : state)
-        benchmark::DoNotOptimize(
-            cv::essential::ransac::scoreMsacSprt(E, problem, HUGE_VAL, test, rejected));
+        auto score = cv::essential::ransac::scoreMsacSprt(E, problem, HUGE_VAL, test, rejected);
+        benchmark::DoNotOptimize(score);
     state.counters["ns_per_point"] = nsPer(double(state.iterations()) * double(state.range(0)));
 }
 BENCHMARK(BM_ScoreSprt)->Arg(500)->Arg(1000);
@@ -112,8 +114,8 @@ void BM_InlierMask(benchmark::State& state)
     const cv::essential::Problem problem = scoringProblem(int(state.range(0)), E);
     std::vector<uchar> mask(problem.x1.size());
     for (auto _ : state)
-        benchmark::DoNotOptimize(
-            cv::essential::ransac::inlierMask(E, problem, problem.threshold, mask.data()));
+        auto count = cv::essential::ransac::inlierMask(E, problem, problem.threshold, mask.data());
+        benchmark::DoNotOptimize(count);
     state.counters["ns_per_point"] = nsPer(double(state.iterations()) * double(state.range(0)));
 }
 BENCHMARK(BM_InlierMask)->Arg(500);
@@ -131,7 +133,7 @@ void BM_RefineIrls(benchmark::State& state)
     const cv::Matx33d E0 = s.E * essential_test::axisAngle(cv::Vec3d(0, 0.6, 0.8), 0.01);
     int64_t iterations = 0;
     for (auto _ : state) {
-        const auto r = cv::essential::refine::refineIrls(problem, E0, 0.5 * problem.threshold);
+        auto r = cv::essential::refine::refineIrls(problem, E0, 0.5 * problem.threshold);
         iterations += r.iterations;
         benchmark::DoNotOptimize(r.E);
     }
@@ -155,7 +157,7 @@ template <bool Ours> void BM_RecoverPose(benchmark::State& state)
     cv::Mat R, t, mask;
     for (auto _ : state) {
         mask0.copyTo(mask);
-        const int inFront = Ours ? cv::essential::recoverPoseIter(E, s.px1, s.px2, K, R, t, mask)
+        int inFront = Ours ? cv::essential::recoverPoseIter(E, s.px1, s.px2, K, R, t, mask)
                                  : cv::recoverPose(E, s.px1, s.px2, K, R, t, mask);
         benchmark::DoNotOptimize(inFront);
     }

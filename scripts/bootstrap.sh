@@ -7,7 +7,7 @@ set -euo pipefail
 packages=(cmake g++ make python3 libopencv-dev libeigen3-dev libgtest-dev libbenchmark-dev nlohmann-json3-dev
     python3-matplotlib   # the experiments' plots (docs/EXPERIMENTS.md)
     xz-utils patch       # OpenCV's own tests from Debian's source package (docs/OPENCV_TESTS.md)
-    clang libclang-rt-14-dev # clang and its sanitizer / libFuzzer runtimes: sanitize.sh, fuzz.sh
+    clang libclang-rt-dev # clang and its sanitizer / libFuzzer runtimes: sanitize.sh, fuzz.sh
     python3-dev pybind11-dev python3-numpy python3-opencv python3-pytest # the Python module (python/)
     python3-dask python3-distributed python3-tqdm # its batch example on a cluster, progress bar
     colmap libsqlite3-dev # essential_colmap on COLMAP's database, its tests (docs/COLMAP.md)

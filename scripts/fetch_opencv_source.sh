@@ -20,9 +20,11 @@
 #   apt-get --print-uris source opencv=VERSION
 #                        gives each file of that exact version with its SHA256 from the signed index;
 #   apt-helper download-file URI FILE SHA256:...
-#                        downloads one file and checks its hash; only the .dsc, the main upstream
-#                        tarball (74 MB) and the Debian tarball (36 kB) are taken, not the
-#                        contrib tarball (54 MB). dpkg-source (dpkg-dev) is not needed.
+#                        downloads one file and checks its hash; only the main upstream tarball
+#                        (74 MB) and the Debian tarball (36 kB) are taken, not the contrib tarball
+#                        (54 MB) nor the .dsc, which nothing reads (the hashes come from the signed
+#                        index; a mirror that lost the .dsc, as one did for 4.10.0+dfsg-5, does
+#                        not stop the fetch). dpkg-source (dpkg-dev) is not needed.
 # The tarballs stay in ${OPENCV_SOURCE_CACHE:-${XDG_CACHE_HOME:-$HOME/.cache}/opencv_essential/
 # opencv-source}, outside the clone: a warm run verifies their hashes and extracts without the
 # network (8 s on a 2-core machine); DEST is left as is when it already holds the same version.
@@ -166,10 +168,10 @@ if ! cached_files_valid; then
     uris=$(apt-get "${apt_options[@]}" --print-uris -q source "$source_package=$version" 2>&1) ||
         die "apt-get source $source_package=$version: the archive does not have this version: $uris"
     : >"$manifest.new"
-    # Lines: 'URI' FILE SIZE SHA256:HASH. Everything but the contrib tarball.
+    # Lines: 'URI' FILE SIZE SHA256:HASH. The upstream and Debian tarballs only.
     while read -r uri file _size hash; do
         uri=${uri//\'/}
-        [[ "$file" == *.orig-contrib.tar.* ]] && continue
+        [[ "$file" == *.orig.tar.* || "$file" == *.debian.tar.* ]] || continue
         [[ "$hash" == SHA256:* ]] || die "no SHA256 for $file in the source index: $hash"
         echo "fetch_opencv_source.sh: downloading $file" >&2
         /usr/lib/apt/apt-helper "${apt_options[@]}" download-file "$uri" "$files_dir/$file" "$hash" >&2 ||

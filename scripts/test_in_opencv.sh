@@ -56,21 +56,12 @@ add_counts() {
     echo "test_in_opencv.sh: $2: $p passed, $f failed"
 }
 
-# Left out in-tree: two tests that compare the module with OpenCV's own USAC result on one fixed
-# scene each, which holds against Debian's OpenCV binary (the standalone build) but not against
-# this source build, whose OpenCV is compiled differently (no runtime SIMD dispatch, -O3): its
-# USAC takes another path there and misses the pose (seed 102 of DropInParity: OpenCV's E is 1.3
-# from ours, ours within 0.02 of the truth, which the test also checks; TwoCameras: OpenCV counts
-# 5 points in front, the module 40). The module's side of both is checked by the other tests.
-known_build_dependent='DropInParity.EveryOverloadEveryLayout'
-known_build_dependent+=':EveryRecoverPoseOverload/DropInRecoverPose.AcceptRejectAndOutputsAsOpenCV/TwoCameras'
-
 start=$SECONDS
-echo "== opencv_test_essential (OpenCV ts, 2 shards; left out: $known_build_dependent) =="
+echo "== opencv_test_essential (OpenCV ts, 2 shards) =="
 pids=()
 for shard in 0 1; do
     GTEST_TOTAL_SHARDS=2 GTEST_SHARD_INDEX=$shard "$build/bin/opencv_test_essential" \
-        --gtest_output="xml:$results/test_$shard.xml" --gtest_filter="-$known_build_dependent" "$@" \
+        --gtest_output="xml:$results/test_$shard.xml" "$@" \
         >"$results/test_$shard.log" 2>&1 &
     pids+=($!)
 done

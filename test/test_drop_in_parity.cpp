@@ -1,9 +1,10 @@
 // This file is part of opencv_essential, licensed under the Apache License, Version 2.0.
 // See the LICENSE file at the top of the source tree.
 
-// Drop-in parity with cv::findEssentialMat (OpenCV 4.6): every overload, every point layout, the
-// same output types and shapes, inlier masks that agree on well-posed data, the stacked solutions
-// of exactly five points, and LMEDS.
+// Drop-in parity with cv::findEssentialMat of the OpenCV at hand (4.6, 4.10, 5.0): every
+// overload, every point layout, the same acceptance, output types and shapes, the stacked
+// solutions of exactly five points, and LMEDS. Answers are checked against the scenes' ground
+// truth, not against OpenCV's answer.
 
 #include "opencv2/essential.hpp"
 #include "synthetic_scene.hpp"
@@ -117,12 +118,8 @@ std::vector<cv::Point2d> distort(const std::vector<cv::Point2d>& normalised,
     return out;
 }
 
-/** Data where a 95% mask agreement is a fair bar: 300 points, 70% inliers, threshold 1 px, and
-noise of 0.1 px (0.0002 normalised units at f = 500). OpenCV's RANSAC returns its best 5-point
-hypothesis unrefined, so at the paper's 0.5 px noise its mask misses borderline inliers: measured
-over 40 seeds with a 1 px threshold, the two masks then agree on 82% to 100% of the points (mean
-92%), OpenCV's mask matching the ground truth on as little as 80% of them, ours on 93%. At 0.1 px
-the measured agreement over 300 seeds was 95.7% at worst and 99.9% on average. */
+/** Well-posed data: 300 points, 70% inliers, threshold 1 px, noise of 0.1 px (0.0002 normalised
+units at f = 500), so that the estimate's mask can be held to the ground truth's labels. */
 SceneConfig parityScene()
 {
     SceneConfig cfg;
@@ -132,18 +129,35 @@ SceneConfig parityScene()
     return cfg;
 }
 
-double maskAgreement(const cv::Mat& a, const cv::Mat& b)
+/** Share of the points on which `mask` and the scene's inlier labels agree. */
+double truthAgreement(const cv::Mat& mask, const SyntheticScene& s)
 {
-    return 1.0 - double(cv::countNonZero(a != b)) / double(a.total());
+    int same = 0;
+    for (int i = 0; i < static_cast<int>(s.inlier.size()); ++i)
+        same += (mask.at<uchar>(i) != 0) == s.inlier[static_cast<size_t>(i)] ? 1 : 0;
+    return double(same) / double(s.inlier.size());
 }
 
-/** Lowest mask agreement seen by expectParity (recorded as a test property). */
+/** Lowest agreement of the module's mask with the ground truth seen by expectParity (recorded as
+a test property). */
 double gMinAgreement = 1.0;
 
-/** The checks shared by every (overload, layout) pair. */
+/** Every output's agreement with the truth must reach this. At 0.1 px noise and a 1 px threshold a
+true match is inside the threshold and an outlier outside it, but for a few borderline points and
+the outliers that fall within 1 px of their epipolar line by chance: measured over seeds 101 to
+130 (30 scenes x 6 overloads x 6 layouts, Debian's OpenCV 4.6), the module's masks agreed with the
+labels on at least 99.6% of the points. */
+constexpr double kMinTruthAgreement = 0.98;
+
+/** The checks shared by every (overload, layout) pair. The interface is compared with the
+OpenCV at hand: both accept the call, the same types and shapes, masks of 0 and 1. The answer is
+compared with the ground truth, never with OpenCV's: whether OpenCV's own estimate is right on a
+scene depends on its version and build (a source-built 4.6 misses seed 102's pose, which Debian's
+binary finds), and that judges OpenCV, not the drop-in. */
 void expectParity(const cv::Mat& Ecv, const cv::Mat& maskCv, const cv::Mat& Eus,
-                  const cv::Mat& maskUs, int N, double minAgreement)
+                  const cv::Mat& maskUs, const SyntheticScene& truth)
 {
+    const int N = static_cast<int>(truth.inlier.size());
     ASSERT_EQ(Ecv.rows, 3);
     ASSERT_EQ(Ecv.cols, 3);
     ASSERT_EQ(Eus.rows, 3);
@@ -157,11 +171,11 @@ void expectParity(const cv::Mat& Ecv, const cv::Mat& maskCv, const cv::Mat& Eus,
     EXPECT_EQ(maskUs.type(), maskCv.type());
     EXPECT_EQ(cv::countNonZero(maskUs > 1), 0) << "mask values must be 0 or 1";
     EXPECT_EQ(cv::countNonZero(maskCv > 1), 0);
-    const double agreement = maskAgreement(maskCv, maskUs);
+    // The module's answer: the true geometry and the true inliers.
+    EXPECT_LT(essentialDistance(cv::Matx33d(Eus), truth.E), 0.02);
+    const double agreement = truthAgreement(maskUs, truth);
     gMinAgreement = std::min(gMinAgreement, agreement);
-    EXPECT_GE(agreement, minAgreement);
-    // Both essential matrices describe the same geometry.
-    EXPECT_LT(essentialDistance(cv::Matx33d(Ecv), cv::Matx33d(Eus)), 0.05);
+    EXPECT_GE(agreement, kMinTruthAgreement);
 }
 
 struct ParityCase
@@ -256,7 +270,6 @@ TEST(DropInParity, EveryOverloadEveryLayout)
     gMinAgreement = 1.0;
     for (const uint64_t seed : {101ULL, 102ULL}) {
         const ParityCase c = makeCase(seed);
-        const int N = static_cast<int>(c.scene.px1.size());
         const std::vector<Overload> overloads = overloadsFor(c);
         for (size_t k = 0; k < overloads.size(); ++k) {
             const std::vector<cv::Point2d>& p1 = usesDistortedPoints(k) ? c.dist1 : c.scene.px1;
@@ -269,13 +282,11 @@ TEST(DropInParity, EveryOverloadEveryLayout)
                 cv::Mat maskCv, maskUs;
                 const cv::Mat Ecv = overloads[k].opencv(a.arr(), b.arr(), maskCv);
                 const cv::Mat Eus = overloads[k].ours(a.arr(), b.arr(), maskUs);
-                expectParity(Ecv, maskCv, Eus, maskUs, N, 0.95);
-                // And both are right: ours close to the true E.
-                EXPECT_LT(essentialDistance(cv::Matx33d(Eus), c.scene.E), 0.02);
+                expectParity(Ecv, maskCv, Eus, maskUs, c.scene);
             }
         }
     }
-    RecordProperty("minMaskAgreementPercent", static_cast<int>(100 * gMinAgreement));
+    RecordProperty("minTruthAgreementPermille", static_cast<int>(1000 * gMinAgreement));
 }
 
 TEST(DropInParity, MaskOutputKinds)
@@ -342,20 +353,19 @@ TEST(DropInParity, DefaultArgumentsMatchOpenCVDefaults)
 {
     // findEssentialMat(p1, p2, K) and findEssentialMat(p1, p2) (focal 1, pp 0) with defaults.
     const ParityCase c = makeCase(104);
-    const int N = static_cast<int>(c.scene.px1.size());
     cv::Mat maskCv, maskUs;
     cv::Mat Ecv = cv::findEssentialMat(c.scene.px1, c.scene.px2, cv::Mat(c.scene.K), cv::RANSAC,
                                        0.999, 1.0, 1000, maskCv);
     cv::Mat Eus = cv::essential::findEssentialMatIter(c.scene.px1, c.scene.px2, cv::Mat(c.scene.K),
                                                       cv::RANSAC, 0.999, 1.0, 1000, maskUs);
-    expectParity(Ecv, maskCv, Eus, maskUs, N, 0.95);
+    expectParity(Ecv, maskCv, Eus, maskUs, c.scene);
     // Normalised points with the focal form's defaults (focal 1, pp (0, 0)), threshold in the
     // same (normalised) units: 0.002 is 1 px at f = 500.
     Ecv = cv::findEssentialMat(c.scene.x1, c.scene.x2, 1.0, cv::Point2d(0, 0), cv::RANSAC, 0.999,
                                0.002, 1000, maskCv);
     Eus = cv::essential::findEssentialMatIter(c.scene.x1, c.scene.x2, 1.0, cv::Point2d(0, 0),
                                               cv::RANSAC, 0.999, 0.002, 1000, maskUs);
-    expectParity(Ecv, maskCv, Eus, maskUs, N, 0.95);
+    expectParity(Ecv, maskCv, Eus, maskUs, c.scene);
     // The focal form's defaults are (focal 1, pp (0, 0), RANSAC, 0.999, threshold 1, 1000).
     cv::Mat maskDef, maskExplicit;
     const cv::Mat Edef = cv::essential::findEssentialMatIter(
@@ -422,14 +432,13 @@ TEST(DropInParity, ExactlyFivePointsGiveStackedSolutions)
     EXPECT_EQ(found, 30);
 }
 
-TEST(DropInParity, LmedsAgreesWithOpenCV)
+TEST(DropInParity, LmedsAsOpenCV)
 {
     // LMedS needs more than half inliers; 70% here. Its threshold comes from the median error, so
     // no pixel threshold is passed (OpenCV ignores it).
     for (const uint64_t seed : {121ULL, 122ULL, 123ULL}) {
         SCOPED_TRACE(seed);
         const ParityCase c = makeCase(seed);
-        const int N = static_cast<int>(c.scene.px1.size());
         for (const Layout layout : {Layout::VectorPoint2f, Layout::MatNx2F64}) {
             SCOPED_TRACE(layoutName(layout));
             const LayoutPoints a(c.scene.px1, layout), b(c.scene.px2, layout);
@@ -438,8 +447,7 @@ TEST(DropInParity, LmedsAgreesWithOpenCV)
                                                      cv::LMEDS, 0.999, 1.0, 1000, maskCv);
             const cv::Mat Eus = cv::essential::findEssentialMatIter(
                 a.arr(), b.arr(), cv::Mat(c.scene.K), cv::LMEDS, 0.999, 1.0, 1000, maskUs);
-            expectParity(Ecv, maskCv, Eus, maskUs, N, 0.95);
-            EXPECT_LT(essentialDistance(cv::Matx33d(Eus), c.scene.E), 0.02);
+            expectParity(Ecv, maskCv, Eus, maskUs, c.scene);
             // LMedS marks most of the 210 correct matches.
             EXPECT_GE(cv::countNonZero(maskUs), static_cast<int>(0.9 * c.scene.numInliers));
         }

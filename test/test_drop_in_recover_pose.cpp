@@ -1,13 +1,15 @@
 // This file is part of opencv_essential, licensed under the Apache License, Version 2.0.
 // See the LICENSE file at the top of the source tree.
 
-// Drop-in conformance of the four recoverPose overloads, measured against cv::recoverPose (OpenCV
-// 4.6) itself at run time: for each overload (one test instance each) x point layout x mask form
-// (x method flag for the two-camera form), both throw or neither does; when neither does, the
-// same count, R, t, mask (shape, type and values), E and triangulated points. The scene has depths
-// below 20 baselines, where OpenCV's 50-baseline cut removes nothing, so that its default overloads
-// and the module's (which have no cut) must agree exactly. The distanceThresh form is then checked
-// where the cut matters.
+// Drop-in conformance of the four recoverPose overloads, measured against cv::recoverPose of the
+// OpenCV at hand (4.6, 4.10, 5.0) at run time: for each overload (one test instance each) x point
+// layout x mask form (x method flag for the two-camera form), both throw or neither does; when
+// neither does, the same output shapes and types. From a given E (a deterministic decomposition)
+// also the same count, R, t, mask values and triangulated points; the two-camera form, where each
+// library estimates its own E, is held to the ground truth instead. The scene has depths below 20
+// baselines, where OpenCV's 50-baseline cut removes nothing, so that its default overloads and the
+// module's (which have no cut) must agree exactly. The distanceThresh form is then checked where
+// the cut matters.
 
 #include "drop_in_layouts.hpp"
 #include "opencv2/essential.hpp"
@@ -263,16 +265,28 @@ void expectSameOutputs(const Outcome& us, const Outcome& cv, PoseOverload o)
     EXPECT_EQ(describe(us.mask), describe(cv.mask));
     EXPECT_EQ(describe(us.X), describe(cv.X));
     EXPECT_EQ(describe(us.E), describe(cv.E));
-    if (us.R.empty() || cv.R.empty()) return;
+    if (us.R.empty()) return;
     if (o == PoseOverload::TwoCameras) {
-        // Each library estimates its own E: the same pose up to the estimate's accuracy on
-        // noise-free data (a hundredth of a degree), the same count and mask (every point).
-        EXPECT_LT(rotationErrorDeg(cv::Matx33d(us.R), cv::Matx33d(cv.R)), 0.01);
-        EXPECT_LT(translationErrorDeg(cv::Vec3d(us.t), cv::Vec3d(cv.t)), 0.01);
-    } else {
-        EXPECT_LT(cv::norm(us.R, cv.R, cv::NORM_INF), kSamePose);
-        EXPECT_LT(cv::norm(us.t, cv.t, cv::NORM_INF), kSamePose);
+        // Each library estimates its own E, so the module's answer is held to the ground truth,
+        // not to OpenCV's (which a source-built OpenCV 4.6 gets wrong on this scene: 5 points in
+        // front): the true pose to the estimate's accuracy on noise-free data (a hundredth of a
+        // degree), every point counted and marked.
+        EXPECT_LT(rotationErrorDeg(cv::Matx33d(us.R), scene().R), 0.01);
+        EXPECT_LT(translationErrorDeg(cv::Vec3d(us.t), scene().t), 0.01);
+        EXPECT_EQ(us.count, kPoints);
+        if (!us.mask.empty()) {
+            EXPECT_EQ(cv::countNonZero(us.mask), kPoints);
+        }
+        return;
     }
+    // From a given E the pose is a deterministic decomposition and cheirality count: the same
+    // candidate as OpenCV's, the same count, mask values and triangulated points, and the true
+    // pose (E is the scene's, exact).
+    EXPECT_LT(rotationErrorDeg(cv::Matx33d(us.R), scene().R), 1e-6);
+    EXPECT_LT(translationErrorDeg(cv::Vec3d(us.t), scene().t), 1e-6);
+    if (cv.R.empty()) return;
+    EXPECT_LT(cv::norm(us.R, cv.R, cv::NORM_INF), kSamePose);
+    EXPECT_LT(cv::norm(us.t, cv.t, cv::NORM_INF), kSamePose);
     EXPECT_EQ(us.count, cv.count);
     if (!us.mask.empty() && us.mask.size() == cv.mask.size()) {
         EXPECT_EQ(cv::countNonZero(us.mask != cv.mask), 0) << "mask values differ";
@@ -421,8 +435,9 @@ TEST(DropInRecoverPose, DistanceThreshAsOpenCV)
 
 TEST(DropInRecoverPose, TwoCameraFormEstimatesAsOpenCV)
 {
-    // With outliers, noise and real distortion: the module's two-camera recoverPose against
-    // OpenCV's, on data where both are right (depths below 20 baselines, 0.3 px noise).
+    // With outliers, noise and real distortion: the module's two-camera recoverPose gives
+    // OpenCV's output shapes and the true pose and inliers (depths below 20 baselines, 0.3 px
+    // noise). OpenCV's own answer is not judged here.
     SceneConfig cfg;
     cfg.numPoints = 150;
     cfg.inlierRatio = 0.7;
@@ -446,23 +461,21 @@ TEST(DropInRecoverPose, TwoCameraFormEstimatesAsOpenCV)
         const SyntheticScene s = makeScene(cfg, seed);
         const std::vector<cv::Point2d> p1 = distort(s.x1, K1, d1), p2 = distort(s.x2, K2, d2);
         cv::Mat Ec, Rc, tc, mc, Eu, Ru, tu, mu;
-        const int nc = cv::recoverPose(p1, p2, cv::Mat(K1), d1, cv::Mat(K2), d2, Ec, Rc, tc,
-                                       cv::RANSAC, 0.999, 1.0, mc);
+        cv::recoverPose(p1, p2, cv::Mat(K1), d1, cv::Mat(K2), d2, Ec, Rc, tc, cv::RANSAC, 0.999, 1.0,
+                        mc);
         const int nu = cv::essential::recoverPoseIter(p1, p2, cv::Mat(K1), d1, cv::Mat(K2), d2, Eu,
                                                       Ru, tu, cv::RANSAC, 0.999, 1.0, mu);
         EXPECT_EQ(describe(Eu), describe(Ec));
         EXPECT_EQ(describe(mu), describe(mc));
-        // Both near the truth. Measured over seeds 400 to 439: ours within 0.04 degrees
-        // (rotation) and 0.07 (translation direction), OpenCV, whose E is its best five-point
-        // sample unrefined, within 0.36 and 0.47.
+        // Near the truth. Measured over seeds 400 to 439 (Debian's OpenCV 4.6): ours within 0.04
+        // degrees (rotation) and 0.07 (translation direction), OpenCV, whose E is its best
+        // five-point sample unrefined, within 0.36 and 0.47.
         EXPECT_LT(rotationErrorDeg(cv::Matx33d(Ru), s.R), 0.2);
         EXPECT_LT(translationErrorDeg(cv::Vec3d(tu), s.t), 0.3);
-        EXPECT_LT(rotationErrorDeg(cv::Matx33d(Rc), s.R), 1.0);
-        EXPECT_LT(translationErrorDeg(cv::Vec3d(tc), s.t), 1.5);
-        // The mask marks the inliers in front, 0 or 1, as OpenCV's; the count is that of the mask.
+        // The mask marks the inliers in front with 0 or 1, as OpenCV's does; the count is that of
+        // the mask.
         EXPECT_EQ(cv::countNonZero(mu > 1), 0);
         EXPECT_EQ(nu, cv::countNonZero(mu));
-        EXPECT_EQ(nc, cv::countNonZero(mc));
         // Ours marks the inliers (104 to 106 of 105 over the 40 seeds; OpenCV 93 to 105).
         EXPECT_NEAR(nu, s.numInliers, 0.03 * s.numInliers);
     }

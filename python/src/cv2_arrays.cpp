@@ -15,8 +15,13 @@ bool isNumber(PyObject* o)
     return PyBool_Check(o) || PyLong_Check(o) || PyFloat_Check(o);
 }
 
-/** OpenCV's depth for a numpy dtype that cv2 4.6 passes through; -1 for the others (int64 and
-uint64 are handled by the caller). */
+/** cv2 maps numpy's float16 to CV_16F from OpenCV 4.8 on (opencv/opencv#23691, merged for 4.8.0)
+and refuses it before; the module follows the OpenCV it is built against. */
+constexpr bool kReadsFloat16 =
+    CV_VERSION_MAJOR > 4 || (CV_VERSION_MAJOR == 4 && CV_VERSION_MINOR >= 8);
+
+/** OpenCV's depth for a numpy dtype that cv2 of the same version passes through; -1 for the
+others (int64 and uint64 are handled by the caller). */
 int depthOf(const py::dtype& dt)
 {
     const char kind = dt.kind();
@@ -26,6 +31,7 @@ int depthOf(const py::dtype& dt)
     if (kind == 'u' && size == 2) return CV_16U;
     if (kind == 'i' && size == 2) return CV_16S;
     if (kind == 'i' && size == 4) return CV_32S;
+    if (kind == 'f' && size == 2 && kReadsFloat16) return CV_16F;
     if (kind == 'f' && size == 4) return CV_32F;
     if (kind == 'f' && size == 8) return CV_64F;
     return -1;
@@ -57,8 +63,11 @@ std::string describe(py::handle src)
 }
 
 const char* const kExpected =
-    "expected a numpy array of uint8, int8, uint16, int16, int32, int64, uint64, float32 or "
-    "float64 (N x 2 or N x 1 x 2 for points), a number, a tuple of numbers or None";
+    kReadsFloat16
+        ? "expected a numpy array of uint8, int8, uint16, int16, int32, int64, uint64, float16, "
+          "float32 or float64 (N x 2 or N x 1 x 2 for points), a number, a tuple of numbers or None"
+        : "expected a numpy array of uint8, int8, uint16, int16, int32, int64, uint64, float32 or "
+          "float64 (N x 2 or N x 1 x 2 for points), a number, a tuple of numbers or None";
 
 } // namespace
 
@@ -182,7 +191,7 @@ py::object toNumpy(const cv::Mat& m)
     if (src.channels() > 1) shape.push_back(src.channels());
     py::array out(dt, shape);
     std::memcpy(out.mutable_data(), src.data, src.total() * src.elemSize());
-    return std::move(out);
+    return py::object(std::move(out));
 }
 
 } // namespace cv_essential_py

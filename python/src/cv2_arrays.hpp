@@ -31,13 +31,15 @@ python/tests/test_layouts.py:
 - None: an empty Mat;
 - a Python number (bool, int, float): a 4 x 1 CV_64F Mat (v, 0, 0, 0), as cv2 reads a scalar;
 - a tuple of numbers: an n x 1 CV_64F Mat;
-- a numpy array of uint8, int8, uint16, int16, int32, float32 or float64: a Mat of that depth
+- a numpy array of uint8, int8, uint16, int16, int32, float32 or float64 (and float16, as
+  CV_16F, when built against OpenCV 4.8 or later, whose cv2 reads it so): a Mat of that depth
   sharing its memory (copied first when it is not C-contiguous). 1-D arrays are n x 1; 2-D are
   rows x cols; 3-D arrays with at most CV_CN_MAX in the last dimension are rows x cols with that
   many channels; other shapes are n-dimensional Mats (which the estimators then reject).
   int64 and uint64 arrays are converted to float64, exactly for |values| < 2^53 (cv2 casts them
   to int32, which wraps larger values silently).
-Anything else (lists, bool / float16 / uint32 / complex / object arrays, strings) is refused:
+Anything else (lists, bool / uint32 / complex / object arrays, float16 before OpenCV 4.8, strings)
+is refused:
 returns false and, when `why` is given, says what was expected. */
 bool toInputMat(py::handle src, InputMat& out, std::string* why);
 

@@ -1,7 +1,7 @@
 # essential_probe_opencv_loop(<result-var>): can this build run solvers inside OpenCV's own
 # RANSAC / LMedS loop (EssentialParams::engine = ENGINE_OPENCV)?
 #
-# The loop is exported by libopencv_calib3d 4.x (cv::createRANSACPointSetRegistrator,
+# The loop is exported by libopencv_calib3d 4.x and libopencv_geometry 5.x (cv::createRANSACPointSetRegistrator,
 # cv::createLMeDSPointSetRegistrator), but its interface, cv::PointSetRegistrator and its
 # Callback, is declared only in OpenCV's private calib3d/src/precomp.hpp. The module declares it
 # again itself (modules/essential/src/ransac/opencv_point_set_registrator.hpp, an ABI copy of
@@ -146,11 +146,8 @@ function(essential_probe_opencv_loop result_var)
                    "OpenCV's RANSAC loop ABI cannot run")
     return()
   endif()
-  if(NOT OpenCV_VERSION VERSION_GREATER_EQUAL 4.0 OR NOT OpenCV_VERSION VERSION_LESS 5.0)
-    message(STATUS "opencv_essential: ENGINE_OPENCV disabled: OpenCV ${OpenCV_VERSION} is not "
-                   "4.x, whose PointSetRegistrator ABI the module declares")
-    return()
-  endif()
+  # Every version is probed (4.6, 4.10 and 5.0 pass): the declaration is a copy of a private
+  # class, and only running it against the OpenCV at hand says whether it matches.
 
   # Re-probe when OpenCV, the compiler, the declaration or the probe itself change.
   file(SHA256 ${PROJECT_SOURCE_DIR}/modules/essential/src/ransac/opencv_point_set_registrator.hpp
@@ -168,7 +165,7 @@ function(essential_probe_opencv_loop result_var)
     try_run(run_result compile_result ${dir}/build ${dir}/probe.cpp
       CMAKE_FLAGS
         "-DINCLUDE_DIRECTORIES=${PROJECT_SOURCE_DIR}/modules/essential/src;${OpenCV_INCLUDE_DIRS}"
-      LINK_LIBRARIES opencv_core opencv_calib3d
+      LINK_LIBRARIES opencv_core ${ESSENTIAL_OPENCV_GEOMETRY}
       COMPILE_OUTPUT_VARIABLE compile_output
       RUN_OUTPUT_VARIABLE run_output)
     string(STRIP "${run_output}" run_output)
@@ -182,7 +179,7 @@ function(essential_probe_opencv_loop result_var)
     if(NOT compile_result)
       string(CONCAT why "the probe program did not compile or link against OpenCV "
              "${OpenCV_VERSION} (are cv::createRANSACPointSetRegistrator and "
-             "createLMeDSPointSetRegistrator exported by libopencv_calib3d?)")
+             "createLMeDSPointSetRegistrator exported by libopencv_calib3d (4.x) or libopencv_geometry (5.x)?)")
       file(WRITE ${dir}/compile_output.txt "${compile_output}")
       string(APPEND why "; compiler output in ${dir}/compile_output.txt")
     elseif(NOT run_result STREQUAL "0")

@@ -114,7 +114,7 @@ inline cv::Mat makeCamera(FuzzInput& in)
     case 1:
         return cv::Mat::eye(in.pick(5), in.pick(5), CV_64F);
     case 2: {
-        cv::Mat k = (cv::Mat_<float>(3, 3) << 500, 0, 320, 0, 500, 240, 0, 0, 1);
+        cv::Mat k = cv::Mat(cv::Matx<float, 3, 3>(500, 0, 320, 0, 500, 240, 0, 0, 1));
         k.at<float>(in.pick(3), in.pick(3)) = static_cast<float>(in.anyDouble());
         return k;
     }
@@ -122,7 +122,9 @@ inline cv::Mat makeCamera(FuzzInput& in)
         const double f = in.pick(8) == 0 ? in.anyDouble() : 100.0 + in.pick(1000);
         const double fy = in.pick(8) == 0 ? -f : f;
         const double skew = in.pick(8) == 0 ? in.anyDouble() : 0.0;
-        return (cv::Mat_<double>(3, 3) << f, skew, in.pick(640), 0, fy, in.pick(480), 0, 0, 1);
+        // Drawn in this order (a constructor's arguments have none), as the seeds expect.
+        const double cx = in.pick(640), cy = in.pick(480);
+        return cv::Mat(cv::Matx<double, 3, 3>(f, skew, cx, 0, fy, cy, 0, 0, 1));
     }
     }
 }

@@ -117,7 +117,11 @@ void runOne(FuzzInput& in)
         const cv::Mat K = camera(in);
         const int method = makeMethod(in);
         const double prob = makeProb(in), thr = makeThreshold(in);
+#if CV_VERSION_MAJOR < 5
         const cv::Mat E = ess::findEssentialMatIter(p1, p2, K, method, prob, thr, mask);
+#else // OpenCV 5 has no form without maxIters: its default instead
+        const cv::Mat E = ess::findEssentialMatIter(p1, p2, K, method, prob, thr, 1000, mask);
+#endif
         checkEssential(E, mask, countOf(p1, mask), true);
         break;
     }
@@ -130,7 +134,11 @@ void runOne(FuzzInput& in)
         const cv::Mat E =
             api == 2 ? ess::findEssentialMatIter(p1, p2, focal, pp, method, prob, thr,
                                                  makeMaxIters(in, 4), mask)
+#if CV_VERSION_MAJOR < 5
                      : ess::findEssentialMatIter(p1, p2, focal, pp, method, prob, thr, mask);
+#else
+                     : ess::findEssentialMatIter(p1, p2, focal, pp, method, prob, thr, 1000, mask);
+#endif
         checkEssential(E, mask, countOf(p1, mask), true);
         break;
     }

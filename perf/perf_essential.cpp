@@ -85,9 +85,10 @@ void BM_ScoreMsac(benchmark::State& state)
 {
     cv::Matx33d E;
     const cv::essential::Problem problem = scoringProblem(int(state.range(0)), E);
-    for (auto _ : state)
+    for (auto _ : state) {
         auto score = cv::essential::ransac::scoreMsac(E, problem);
         benchmark::DoNotOptimize(score);
+    }
     state.counters["ns_per_point"] = nsPer(double(state.iterations()) * double(state.range(0)));
 }
 BENCHMARK(BM_ScoreMsac)->Arg(500)->Arg(1000)->Arg(4000);
@@ -101,9 +102,10 @@ void BM_ScoreSprt(benchmark::State& state)
     test.logIn = -1.0;
     test.logOut = 0.1;
     bool rejected = false;
-    for (auto _ : state)
+    for (auto _ : state) {
         auto score = cv::essential::ransac::scoreMsacSprt(E, problem, HUGE_VAL, test, rejected);
         benchmark::DoNotOptimize(score);
+    }
     state.counters["ns_per_point"] = nsPer(double(state.iterations()) * double(state.range(0)));
 }
 BENCHMARK(BM_ScoreSprt)->Arg(500)->Arg(1000);
@@ -113,9 +115,10 @@ void BM_InlierMask(benchmark::State& state)
     cv::Matx33d E;
     const cv::essential::Problem problem = scoringProblem(int(state.range(0)), E);
     std::vector<uchar> mask(problem.x1.size());
-    for (auto _ : state)
+    for (auto _ : state) {
         auto count = cv::essential::ransac::inlierMask(E, problem, problem.threshold, mask.data());
         benchmark::DoNotOptimize(count);
+    }
     state.counters["ns_per_point"] = nsPer(double(state.iterations()) * double(state.range(0)));
 }
 BENCHMARK(BM_InlierMask)->Arg(500);
@@ -158,7 +161,7 @@ template <bool Ours> void BM_RecoverPose(benchmark::State& state)
     for (auto _ : state) {
         mask0.copyTo(mask);
         int inFront = Ours ? cv::essential::recoverPoseIter(E, s.px1, s.px2, K, R, t, mask)
-                                 : cv::recoverPose(E, s.px1, s.px2, K, R, t, mask);
+                           : cv::recoverPose(E, s.px1, s.px2, K, R, t, mask);
         benchmark::DoNotOptimize(inFront);
     }
 }

@@ -86,8 +86,9 @@ mkdir -p "$files_dir"
 
 # Writes to $1 a deb822 sources file with a deb-src entry for every `deb` entry of the system's apt
 # sources (one-line *.list and deb822 *.sources) whose suite is this release (VERSION_CODENAME of
-# /etc/os-release, or a suite starting with it, such as bookworm-security): the same URIs,
-# components and Signed-By. Fails when there is none.
+# /etc/os-release, or a suite starting with it, such as bookworm-security) or sid, unstable or
+# experimental (an unstable system's codename is that of testing, and OpenCV 5.0 is in
+# experimental): the same URIs, components and Signed-By. Fails when there is none.
 debsrc_entries() {
     local codename out=$1
     codename=$(. /etc/os-release && echo "${VERSION_CODENAME:-}")
@@ -106,7 +107,7 @@ debsrc_entries() {
                     if (types ~ /(^| )deb( |$)/ && uris != "" && suites != "") {
                         n = split(suites, list, " "); keep = ""
                         for (i = 1; i <= n; i++)
-                            if (list[i] == cn || index(list[i], cn "-") == 1) keep = keep " " list[i]
+                            if (list[i] == cn || index(list[i], cn "-") == 1 || list[i] ~ /^(sid|unstable|experimental)$/) keep = keep " " list[i]
                         if (keep != "") {
                             print "Types: deb-src"; print "URIs: " uris; print "Suites:" keep
                             print "Components: " comps
@@ -134,7 +135,7 @@ debsrc_entries() {
                     if ($2 ~ /^\[/) { while ($i !~ /\]$/) { opts = opts " " $i; i++ } opts = opts " " $i; i++ }
                     uri = $i; suite = $(i + 1); comps = ""
                     for (j = i + 2; j <= NF; j++) comps = comps " " $j
-                    if (suite != cn && index(suite, cn "-") != 1) next
+                    if (suite != cn && index(suite, cn "-") != 1 && suite !~ /^(sid|unstable|experimental)$/) next
                     signed = ""
                     if (match(opts, /signed-by=[^] ]*/)) signed = substr(opts, RSTART + 10, RLENGTH - 10)
                     print "Types: deb-src"; print "URIs: " uri; print "Suites: " suite

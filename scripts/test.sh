@@ -5,6 +5,9 @@
 # target for FUZZ_SECONDS (default 20) with a fixed seed (fuzz.sh). Exits non-zero if any stage fails; the last line is "N passed, M failed"
 # over the ctest entries of both trees plus one per fuzz target. Extra arguments go to both ctest runs,
 # e.g. scripts/test.sh -R install_and_consume
+# Then the Debian 13 stage (OpenCV 4.10; ESSENTIAL_DEBIAN13=0 leaves it out) and, with
+# ESSENTIAL_OPENCV5=1, the OpenCV 5.0 stage: the whole suite again inside a Debian root file
+# system (scripts/test_in_debian.sh), its counts in the total.
 # Last, unless ESSENTIAL_INTREE=0, the in-tree stage (scripts/test_in_opencv.sh): OpenCV 4.6 built
 # from Debian's source with the module as an extra module (scripts/build_in_opencv.sh, cached
 # outside the clone), then opencv_test_essential, a short opencv_perf_essential run and the Python
@@ -74,6 +77,36 @@ if [[ "${ESSENTIAL_SANITIZE:-1}" != 0 ]]; then
             failed=$((failed + 1))
         fi
     done
+fi
+
+# Other OpenCV versions, each in a Debian root file system (scripts/test_in_debian.sh, cached
+# outside the clone): Debian 13's OpenCV 4.10 unless ESSENTIAL_DEBIAN13=0; OpenCV 5.0 from
+# experimental only with ESSENTIAL_OPENCV5=1 (its port is not complete: docs/OPENCV_VERSIONS.md).
+# Making a root needs root or sudo; without either the stage is skipped, and says so.
+debian_stage() {
+    local name=$1 log summary
+    echo
+    echo "== $2 in a Debian root file system (scripts/test_in_debian.sh $name) =="
+    if [[ $(id -u) -ne 0 ]]; then
+        echo "test.sh: SKIPPED the $name stage: debootstrap and chroot need root (run as root)"
+        return 0
+    fi
+    log=$(mktemp)
+    scripts/test_in_debian.sh "$name" 2>&1 | tee "$log" || true
+    summary=$(grep -E "^debian-$name: [0-9]+ passed, [0-9]+ failed$" "$log" | tail -n1 || true)
+    rm -f "$log"
+    if [[ -z "$summary" ]]; then
+        failed=$((failed + 1))
+    else
+        passed=$((passed + $(sed -E 's/^[^:]*: ([0-9]+) passed.*/\1/' <<<"$summary")))
+        failed=$((failed + $(sed -E 's/.* ([0-9]+) failed$/\1/' <<<"$summary")))
+    fi
+}
+if [[ "${ESSENTIAL_DEBIAN13:-1}" != 0 ]]; then
+    debian_stage trixie "Debian 13, OpenCV 4.10"
+fi
+if [[ "${ESSENTIAL_OPENCV5:-0}" != 0 ]]; then
+    debian_stage opencv5 "Debian unstable, OpenCV 5.0"
 fi
 
 if [[ "${ESSENTIAL_INTREE:-1}" != 0 ]]; then

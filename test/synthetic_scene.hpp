@@ -51,6 +51,13 @@ struct SyntheticScene
     int numInliers = 0;
 };
 
+/** Points as an N x 1 two-channel CV_64F Mat (a copy): what cv::Mat(vector) is in OpenCV 4. OpenCV
+5 makes cv::Mat(vector) a 1-D Mat, so tests that mean the N x 1 layout say so with this. */
+inline cv::Mat pointColumn(const std::vector<cv::Point2d>& points)
+{
+    return cv::Mat(points, true).reshape(2, static_cast<int>(points.size()));
+}
+
 inline cv::Matx33d skewMatrix(const cv::Vec3d& v)
 {
     return cv::Matx33d(0, -v[2], v[1], v[2], 0, -v[0], -v[1], v[0], 0);

@@ -82,7 +82,7 @@ TEST(BadInput, NonFiniteCoordinates)
                          {"points2", "non-finite", "17"});
         // Same in a float Mat of points1.
         cv::Mat m;
-        cv::Mat(scene().px1).convertTo(m, CV_32FC2);
+        essential_test::pointColumn(scene().px1).convertTo(m, CV_32FC2);
         m.at<cv::Vec2f>(3)[0] = static_cast<float>(bad);
         expectThrowsWith([&] { cv::essential::findEssentialMatIter(m, scene().px2, K()); },
                          {"points1", "non-finite", "3"});
@@ -97,8 +97,8 @@ TEST(BadInput, IntegerDepthsAsOpenCV)
     for (const int depth : {CV_32S, CV_16U}) {
         SCOPED_TRACE(depth);
         cv::Mat p1, p2;
-        cv::Mat(scene().px1).convertTo(p1, CV_MAKETYPE(depth, 2));
-        cv::Mat(scene().px2).convertTo(p2, CV_MAKETYPE(depth, 2));
+        essential_test::pointColumn(scene().px1).convertTo(p1, CV_MAKETYPE(depth, 2));
+        essential_test::pointColumn(scene().px2).convertTo(p2, CV_MAKETYPE(depth, 2));
         ASSERT_EQ(p1.rows, N);
         cv::Mat mask;
         const cv::Mat E =
@@ -196,7 +196,7 @@ TEST(BadInput, SingularCameraMatrix)
     expectThrowsWith([&] { cv::essential::findEssentialMatIter(scene().px1, scene().px2, k0); },
                      {"cameraMatrix", "focal"});
     // Non-zero focal lengths but dependent rows.
-    const cv::Mat ks = (cv::Mat_<double>(3, 3) << 500, 1000, 0, 250, 500, 0, 0, 0, 1);
+    const cv::Mat ks = cv::Mat(cv::Matx<double, 3, 3>(500, 1000, 0, 250, 500, 0, 0, 0, 1));
     expectThrowsWith([&] { cv::essential::findEssentialMatIter(scene().px1, scene().px2, ks); },
                      {"cameraMatrix", "singular"});
     // The focal form with focal 0.

@@ -25,8 +25,10 @@ std::vector<cv::essential::EssentialPair> makePairs(int count)
     for (int i = 0; i < count; ++i) {
         const essential_test::SyntheticScene s = essential_test::makeScene(cfg, 100 + i);
         cv::essential::EssentialPair p;
-        p.points1 = cv::Mat(s.px1, true);
-        p.points2 = cv::Mat(s.px2, true);
+        // N x 1 two-channel, as cv::Mat(vector) is in OpenCV 4 (OpenCV 5 makes it 1-D).
+        const int n = static_cast<int>(s.px1.size());
+        p.points1 = cv::Mat(s.px1, true).reshape(2, n);
+        p.points2 = cv::Mat(s.px2, true).reshape(2, n);
         p.cameraMatrix = cv::Mat(s.K);
         pairs.push_back(p);
     }

@@ -102,7 +102,7 @@ TEST(Concurrency, RegistryChangesWhileOtherThreadsEstimate)
     std::atomic<bool> stop{false};
     std::thread registrar([&] {
         // Re-registers a private name over and over: never the solver the estimates use.
-        for (int i = 0; !stop; ++i) {
+        while (!stop) {
             cv::essential::registerSolver("concurrency_test_solver",
                                           [] { return cv::essential::createSolver("gn"); });
             EXPECT_FALSE(cv::essential::listSolvers().empty());

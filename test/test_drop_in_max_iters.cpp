@@ -52,8 +52,8 @@ TEST(DropInMaxIters, TheCapDecidesWhetherTheGeometryIsFound)
             ++calls;
             rightWithOne += !E1.empty() && essentialDistance(cv::Matx33d(E1), s.E) < 0.05;
             rightWithMany += !E2.empty() && essentialDistance(cv::Matx33d(E2), s.E) < 0.05;
-            differ += E1.empty() != E2.empty() ||
-                      (!E1.empty() && cv::norm(E1, E2, cv::NORM_L1) != 0.0);
+            differ +=
+                E1.empty() != E2.empty() || (!E1.empty() && cv::norm(E1, E2, cv::NORM_L1) != 0.0);
         }
     }
     EXPECT_LE(rightWithOne, calls / 2);

@@ -446,8 +446,8 @@ TEST(DropInRecoverPose, TwoCameraFormEstimatesAsOpenCV)
     cfg.minTranslation = 1.0;
     cfg.maxTranslation = 2.0;
     const cv::Matx33d K1(480, 0, 490, 0, 520, 510, 0, 0, 1), K2(530, 0, 505, 0, 500, 495, 0, 0, 1);
-    const cv::Mat d1 = (cv::Mat_<double>(5, 1) << -0.12, 0.03, 0.001, -0.0005, 0.0);
-    const cv::Mat d2 = (cv::Mat_<double>(5, 1) << 0.05, -0.01, 0.0, 0.0005, 0.0);
+    const cv::Mat d1 = cv::Mat(cv::Matx<double, 5, 1>(-0.12, 0.03, 0.001, -0.0005, 0.0));
+    const cv::Mat d2 = cv::Mat(cv::Matx<double, 5, 1>(0.05, -0.01, 0.0, 0.0005, 0.0));
     auto distort = [](const std::vector<cv::Point2d>& x, const cv::Matx33d& K, const cv::Mat& d) {
         std::vector<cv::Point3d> rays;
         for (const cv::Point2d& p : x)
@@ -461,8 +461,8 @@ TEST(DropInRecoverPose, TwoCameraFormEstimatesAsOpenCV)
         const SyntheticScene s = makeScene(cfg, seed);
         const std::vector<cv::Point2d> p1 = distort(s.x1, K1, d1), p2 = distort(s.x2, K2, d2);
         cv::Mat Ec, Rc, tc, mc, Eu, Ru, tu, mu;
-        cv::recoverPose(p1, p2, cv::Mat(K1), d1, cv::Mat(K2), d2, Ec, Rc, tc, cv::RANSAC, 0.999, 1.0,
-                        mc);
+        cv::recoverPose(p1, p2, cv::Mat(K1), d1, cv::Mat(K2), d2, Ec, Rc, tc, cv::RANSAC, 0.999,
+                        1.0, mc);
         const int nu = cv::essential::recoverPoseIter(p1, p2, cv::Mat(K1), d1, cv::Mat(K2), d2, Eu,
                                                       Ru, tu, cv::RANSAC, 0.999, 1.0, mu);
         EXPECT_EQ(describe(Eu), describe(Ec));

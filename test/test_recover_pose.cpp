@@ -127,7 +127,7 @@ TEST(RecoverPose, NoisyScenesGiveTheTruePoseWithAnEstimatedE)
         const SyntheticScene s = makeScene(ordinaryScene(0.7), seed);
         cv::Mat inliers;
         const cv::Mat E =
-            cv::findEssentialMat(s.px1, s.px2, cv::Mat(s.K), cv::RANSAC, 0.999, 1.0, inliers);
+            cv::findEssentialMat(s.px1, s.px2, cv::Mat(s.K), cv::RANSAC, 0.999, 1.0, 1000, inliers);
         ASSERT_EQ(E.rows, 3);
         cv::Mat R, t, mask = inliers.clone();
         const int n = cv::essential::recoverPoseIter(E, s.px1, s.px2, cv::Mat(s.K), R, t, mask);
@@ -457,11 +457,13 @@ TEST(RecoverPose, FocalOverloadAndLayoutsAgree)
 
     // Other point layouts (float points lose precision: compare counts within 1%).
     std::vector<cv::Point2f> f1(s.px1.begin(), s.px1.end()), f2(s.px2.begin(), s.px2.end());
-    const cv::Mat m1 = cv::Mat(s.px1).reshape(1).clone(), m2 = cv::Mat(s.px2).reshape(1).clone();
-    cv::Mat m1f, m2f;
-    cv::Mat(s.px1).convertTo(m1f, CV_32FC2);
-    cv::Mat(s.px2).convertTo(m2f, CV_32FC2);
     const int N = static_cast<int>(s.px1.size());
+    // N x 2 and N x 1 two-channel (shapes given: OpenCV 5 makes a vector a 1-D Mat).
+    const cv::Mat m1 = cv::Mat(s.px1).reshape(1, N).clone(),
+                  m2 = cv::Mat(s.px2).reshape(1, N).clone();
+    cv::Mat m1f, m2f;
+    cv::Mat(s.px1).reshape(2, N).convertTo(m1f, CV_32FC2);
+    cv::Mat(s.px2).reshape(2, N).convertTo(m2f, CV_32FC2);
     const int nv = cv::essential::recoverPoseIter(E, f1, f2, cv::Mat(s.K), R, t);
     EXPECT_LE(std::abs(nv - n0), N / 100);
     EXPECT_LT(cv::norm(t, t0, cv::NORM_INF), 1e-12);

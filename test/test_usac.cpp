@@ -537,3 +537,41 @@ TEST_F(UsacParamsTest, UnsupportedAndInvalidOptionsRaise)
 }
 
 } // namespace
+
+TEST_F(UsacParamsTest, FinalPolisherSwitchesTheFinalRefinement)
+{
+#if CV_VERSION_MAJOR > 4 || (CV_VERSION_MAJOR == 4 && CV_VERSION_MINOR >= 7)
+    cv::Mat m1, m2;
+    cv::UsacParams p = usac;
+    ASSERT_EQ(p.final_polisher, cv::COV_POLISHER); // OpenCV's default
+    const cv::Mat polished = runUsac(p, m1);
+    expectEquivalent(p); // refine = true, the module's default
+    for (const cv::PolishingMethod other : {cv::LSQ_POLISHER, cv::MAGSAC}) {
+        p.final_polisher = other; // every polisher is the module's own final refinement
+        EXPECT_TRUE(sameMat(runUsac(p, m2), polished));
+    }
+    // NONE_POLISHER, or no iterations: the search's model, unrefined.
+    p.final_polisher = cv::NONE_POLISHER;
+    cv::essential::EssentialParams unrefined = equivalent(p);
+    unrefined.refine = false;
+    cv::Mat maskParams;
+    const cv::Mat none = runUsac(p, m1);
+    const cv::Mat expected =
+        cv::essential::findEssentialMatIter(s.px1, s.px2, cv::Mat(s.K), unrefined, maskParams);
+    ASSERT_FALSE(none.empty());
+    EXPECT_LT(essential_test::essentialDistance(cv::Matx33d(none), cv::Matx33d(expected)), 1e-6);
+    EXPECT_GT(essential_test::essentialDistance(cv::Matx33d(none), cv::Matx33d(polished)), 0.0);
+    p = usac;
+    p.final_polisher_iterations = 0;
+    EXPECT_TRUE(sameMat(runUsac(p, m2), none));
+    // Invalid values are refused by name.
+    p = usac;
+    p.final_polisher = static_cast<cv::PolishingMethod>(7);
+    expectError([&] { runUsac(p, m1); }, cv::Error::StsBadArg, "final_polisher");
+    p = usac;
+    p.final_polisher_iterations = -1;
+    expectError([&] { runUsac(p, m1); }, cv::Error::StsBadArg, "final_polisher_iterations");
+#else
+    GTEST_SKIP() << "OpenCV " CV_VERSION "'s UsacParams has no final_polisher (it came in 4.7)";
+#endif
+}

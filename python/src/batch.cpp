@@ -41,7 +41,7 @@ std::vector<PairResult> findBatch(const py::sequence& pairs, const py::object& p
 {
     std::vector<cv::essential::EssentialPair> input;
     input.reserve(pairs.size());
-    for (const py::handle item : pairs) {
+    for (const py::handle& item : pairs) {
         const size_t index = input.size();
         if (!py::isinstance<py::sequence>(item) || py::len(item) != 3)
             raiseCv2Error("findEssentialMatBatch: pair " + std::to_string(index) +

@@ -17,8 +17,8 @@ bool isNumber(PyObject* o)
 
 /** cv2 maps numpy's float16 to CV_16F from OpenCV 4.8 on (opencv/opencv#23691, merged for 4.8.0)
 and refuses it before; the module follows the OpenCV it is built against. */
-constexpr bool kReadsFloat16 =
-    CV_VERSION_MAJOR > 4 || (CV_VERSION_MAJOR == 4 && CV_VERSION_MINOR >= 8);
+constexpr bool kReadsFloat16 = CV_VERSION_MAJOR > 4 ||
+                               (CV_VERSION_MAJOR == 4 && CV_VERSION_MINOR >= 8);
 
 /** OpenCV's depth for a numpy dtype that cv2 of the same version passes through; -1 for the
 others (int64 and uint64 are handled by the caller). */
@@ -82,7 +82,7 @@ bool toInputMat(py::handle src, InputMat& out, std::string* why)
             PyErr_Clear();
             return refuse(why, "a number that does not fit in a double");
         }
-        out.mat = (cv::Mat_<double>(4, 1) << v, 0, 0, 0);
+        out.mat = cv::Mat(cv::Matx<double, 4, 1>(v, 0, 0, 0));
         return true;
     }
     if (PyTuple_Check(o)) {

@@ -28,6 +28,8 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace cv {
@@ -425,6 +427,41 @@ template <typename Enum> int rawEnum(const Enum& field)
     return value;
 }
 
+/** UsacParams has final_polisher and final_polisher_iterations from OpenCV 4.7 on (4.6 has
+neither); detected from the struct itself rather than from a version number. */
+template <typename U, typename = void> struct HasFinalPolisher : std::false_type
+{
+};
+template <typename U>
+struct HasFinalPolisher<U,
+                        std::void_t<decltype(std::declval<const U&>().final_polisher),
+                                    decltype(std::declval<const U&>().final_polisher_iterations)>>
+    : std::true_type
+{
+};
+
+/** Reads final_polisher where UsacParams has it. The module's polisher is its own final IRLS
+refinement (EssentialParams::refine): NONE_POLISHER (0) switches it off, as does
+final_polisher_iterations = 0; LSQ_POLISHER (1), MAGSAC (2) and COV_POLISHER (3, OpenCV's default)
+all run it, to its own convergence test (the iteration count is not a cap there). Anything else is
+refused by name. */
+template <typename U> void readFinalPolisher(const U& usac, EssentialParams& p)
+{
+    if constexpr (HasFinalPolisher<U>::value) {
+        const int polisher = rawEnum(usac.final_polisher);
+        if (polisher < 0 || polisher > 3)
+            CV_Error(Error::StsBadArg, "UsacParams::final_polisher " + std::to_string(polisher) +
+                                           " is not a PolishingMethod");
+        if (usac.final_polisher_iterations < 0)
+            CV_Error(Error::StsBadArg, "UsacParams::final_polisher_iterations must be >= 0, got " +
+                                           std::to_string(usac.final_polisher_iterations));
+        p.refine = polisher != 0 && usac.final_polisher_iterations > 0;
+    } else {
+        (void)usac;
+        (void)p;
+    }
+}
+
 /** The module's settings from a UsacParams (the mapping documented in essential.hpp). */
 EssentialParams usacParams(const UsacParams& usac)
 {
@@ -491,6 +528,7 @@ EssentialParams usacParams(const UsacParams& usac)
     p.maxIterations = usac.maxIterations;
     p.seed = static_cast<uint64>(static_cast<unsigned>(usac.randomGeneratorState));
     p.distance = DISTANCE_SYMMETRIC_EPIPOLAR; // as OpenCV's USAC (LMedS ranks by Sampson)
+    readFinalPolisher(usac, p);
     return p;
 }
 
@@ -575,12 +613,14 @@ Mat findEssentialMatIter(InputArray points1, InputArray points2, InputArray came
                               maskWritingForMethod(method), nullptr, start);
 }
 
+#if CV_VERSION_MAJOR < 5
 Mat findEssentialMatIter(InputArray points1, InputArray points2, InputArray cameraMatrix,
                          int method, double prob, double threshold, OutputArray mask)
 {
     return findEssentialMatIter(points1, points2, cameraMatrix, method, prob, threshold, 1000,
                                 mask);
 }
+#endif
 
 Mat findEssentialMatIter(InputArray points1, InputArray points2, double focal, Point2d pp,
                          int method, double prob, double threshold, int maxIters, OutputArray mask)
@@ -592,11 +632,13 @@ Mat findEssentialMatIter(InputArray points1, InputArray points2, double focal, P
                               start);
 }
 
+#if CV_VERSION_MAJOR < 5
 Mat findEssentialMatIter(InputArray points1, InputArray points2, double focal, Point2d pp,
                          int method, double prob, double threshold, OutputArray mask)
 {
     return findEssentialMatIter(points1, points2, focal, pp, method, prob, threshold, 1000, mask);
 }
+#endif
 
 Mat findEssentialMatIter(InputArray points1, InputArray points2, InputArray cameraMatrix1,
                          InputArray distCoeffs1, InputArray cameraMatrix2, InputArray distCoeffs2,

@@ -25,7 +25,8 @@ points near it (local optimisation), and the winner is refined by IRLS with Tuke
 scale that follows the estimated noise, on the points near it and in front of both cameras
 (docs/ACCURACY.md).
 
-findEssentialMatIter() has every overload of `cv::findEssentialMat` (OpenCV 4.6) with the same
+findEssentialMatIter() has every overload of `cv::findEssentialMat` of the OpenCV it is built
+against (six in 4.x; four in 5.x, which removed the two forms without maxIters) with the same
 arguments, defaults, return value and mask, and recoverPoseIter() every overload of
 `cv::recoverPose`, so renaming a call site is enough to switch. The `Iter` suffix keeps the names
 apart from OpenCV's under `using namespace cv; using namespace cv::essential;` and under
@@ -209,9 +210,12 @@ CV_EXPORTS_W Mat findEssentialMatIter(InputArray points1, InputArray points2,
                                       double prob = 0.999, double threshold = 1.0,
                                       int maxIters = 1000, OutputArray mask = noArray());
 
+#if CV_VERSION_MAJOR <                                                                             \
+    5 // OpenCV 5 removed the two forms without maxIters; so does the module there.
 /** @overload Same as above with maxIters = 1000 (OpenCV's older form). @sa cv::findEssentialMat */
 CV_EXPORTS Mat findEssentialMatIter(InputArray points1, InputArray points2, InputArray cameraMatrix,
                                     int method, double prob, double threshold, OutputArray mask);
+#endif
 
 /** @overload The camera matrix is [focal 0 pp.x; 0 focal pp.y; 0 0 1]. @sa cv::findEssentialMat */
 CV_EXPORTS_W Mat findEssentialMatIter(InputArray points1, InputArray points2, double focal = 1.0,
@@ -219,11 +223,13 @@ CV_EXPORTS_W Mat findEssentialMatIter(InputArray points1, InputArray points2, do
                                       double prob = 0.999, double threshold = 1.0,
                                       int maxIters = 1000, OutputArray mask = noArray());
 
+#if CV_VERSION_MAJOR < 5
 /** @overload Focal/principal-point form with maxIters = 1000 (OpenCV's older form). @sa
  * cv::findEssentialMat */
 CV_EXPORTS Mat findEssentialMatIter(InputArray points1, InputArray points2, double focal,
                                     Point2d pp, int method, double prob, double threshold,
                                     OutputArray mask);
+#endif
 
 /** @overload Two cameras, each with its own distortion.
 
@@ -243,8 +249,11 @@ CV_EXPORTS_W Mat findEssentialMatIter(InputArray points1, InputArray points2,
 Every field of OpenCV 4.6's UsacParams is read, as the module description's table says: confidence,
 threshold, maxIterations, randomGeneratorState, score (MSAC or LMedS), sampler (uniform, PROSAC,
 NAPSAC or progressive NAPSAC), loMethod / loIterations / loSampleSize (IRLS local optimisation);
-isParallel and neighborsSearch cannot change the result and are ignored. Invalid values raise
-StsBadArg naming the field. As in OpenCV, the points are undistorted with each camera's own
+isParallel and neighborsSearch cannot change the result and are ignored. OpenCV 4.7 and later
+add final_polisher and final_polisher_iterations: NONE_POLISHER, or 0 iterations, switch the
+module's final IRLS refinement off (EssentialParams::refine); LSQ_POLISHER, MAGSAC and COV_POLISHER
+(the default) run it to its own convergence test. Invalid values raise StsBadArg naming the
+field. As in OpenCV, the points are undistorted with each camera's own
 coefficients when there are any (then read as the two-camera form reads them, a view copied first),
 and read as with the USAC flags otherwise; the mask is N x 1.
 @sa cv::findEssentialMat

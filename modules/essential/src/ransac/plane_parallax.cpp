@@ -72,7 +72,7 @@ constexpr double kMaxCheckedInlierRatio = 0.5;
 Matx33d nearestEssential(const Matx33d& M)
 {
     SVD svd(Mat(M), SVD::FULL_UV);
-    const Mat Es = svd.u * Mat::diag((Mat_<double>(3, 1) << 1, 1, 0)) * svd.vt;
+    const Mat Es = svd.u * Mat::diag(Mat(Matx<double, 3, 1>(1, 1, 0))) * svd.vt;
     return Matx33d(Es);
 }
 

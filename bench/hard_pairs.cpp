@@ -416,7 +416,8 @@ struct Outcome
 Outcome runMethod(const Method& m, const Problem& p, const std::vector<cv::Point2f>& p1,
                   const std::vector<cv::Point2f>& p2, std::uint64_t seed)
 {
-    const essential_bench::MethodOutcome r = essential_bench::runMethod(m, p.K, p1, p2, seed, p.name);
+    const essential_bench::MethodOutcome r =
+        essential_bench::runMethod(m, p.K, p1, p2, seed, p.name);
     Outcome out;
     out.cpuMs = r.cpuMs;
     out.wallMs = r.wallMs;

@@ -150,9 +150,12 @@ inline Method parseMethod(const std::string& text)
         m.label = text;
     }
     static const std::map<std::string, MethodKind> fixed = {
-        {"cv_ransac", MethodKind::CvRansac},     {"usac_magsac", MethodKind::UsacMagsac},
-        {"usac_accurate", MethodKind::UsacAccurate}, {"usac_prosac", MethodKind::UsacProsac},
-        {"dropin", MethodKind::Dropin},          {"superansac", MethodKind::SupeRansac}};
+        {"cv_ransac", MethodKind::CvRansac},
+        {"usac_magsac", MethodKind::UsacMagsac},
+        {"usac_accurate", MethodKind::UsacAccurate},
+        {"usac_prosac", MethodKind::UsacProsac},
+        {"dropin", MethodKind::Dropin},
+        {"superansac", MethodKind::SupeRansac}};
     const auto it = fixed.find(spec);
     if (it != fixed.end()) {
         m.kind = it->second;
@@ -234,9 +237,9 @@ inline MethodOutcome runMethod(const Method& m, const cv::Matx33d& Kx,
     const auto wall0 = std::chrono::steady_clock::now();
     auto stop = [&]() {
         out.cpuMs = threadCpuMs() - cpu0;
-        out.wallMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() -
-                                                               wall0)
-                         .count();
+        out.wallMs =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - wall0)
+                .count();
     };
     if (m.kind == MethodKind::PoseLib || m.kind == MethodKind::SupeRansac) {
         PoseEstimate e;
@@ -271,8 +274,7 @@ inline MethodOutcome runMethod(const Method& m, const cv::Matx33d& Kx,
             E = cv::findEssentialMat(p1, p2, K, cv::USAC_PROSAC, 0.999, thr, iters, mask);
             break;
         case MethodKind::Dropin:
-            E = cv::essential::findEssentialMatIter(p1, p2, K, cv::RANSAC, 0.999, thr, iters,
-                                                    mask);
+            E = cv::essential::findEssentialMatIter(p1, p2, K, cv::RANSAC, 0.999, thr, iters, mask);
             break;
         default: {
             cv::essential::EssentialParams params = m.params;

@@ -24,8 +24,8 @@
 // level is bisected geometrically. A level stops early once more than 1% of its problems failed
 // (it cannot reach 0.99), or when its mean time exceeds --max-ms (then the method is reported as
 // beyond the cap). Cells with fewer than --min-inliers correct matches are not run. The time of a
-// level is the mean thread CPU time of a whole call, including pose recovery (the paper averages), one
-// call per thread at a time.
+// level is the mean thread CPU time of a whole call, including pose recovery (the paper averages),
+// one call per thread at a time.
 //
 // Part B (the paper's Figure 3): reliability against mean time as M grows, (left) for
 // N = 1000 at 10% and 5% inliers with B = 100, all solvers including robust; (right) at 60%

@@ -32,7 +32,7 @@ struct PoseOutcome
 };
 
 /** A pose estimate from one of the compared estimators, with the thread CPU time of its call(s).
-*/
+ */
 struct PoseEstimate
 {
     bool ok = false;

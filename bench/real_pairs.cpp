@@ -53,7 +53,8 @@ const char* const kUsage =
     "           [--rail-offsets 20,30,40,60] [--rail-step 10] [--threshold-px 1]\n"
     "           [--cache DIR] [--csv FILE] [--md FILE] [--seed S]\n"
     "\n"
-    "  --data DIR          scenes laid out by scripts/fetch_real_pairs.sh (DIR/<scene>/cameras.txt\n"
+    "  --data DIR          scenes laid out by scripts/fetch_real_pairs.sh "
+    "(DIR/<scene>/cameras.txt\n"
     "                      and images/); default ~/.cache/opencv_essential/real when it exists\n"
     "  --scenes LIST       only these scenes of --data (default all but castle-P19, whose\n"
     "                      images are ten of castle-P30's)\n"
@@ -68,7 +69,8 @@ const char* const kUsage =
     "                      best 20%)\n"
     "  --methods LIST      estimators (bench/methods.hpp): cv_ransac, usac_magsac, usac_accurate,\n"
     "                      dropin, ours[:k=v;...], poselib[:maxIters=N], superansac; LABEL=METHOD\n"
-    "                      names a column. Default dropin,cv_ransac,usac_magsac,usac_accurate and,\n"
+    "                      names a column. Default dropin,cv_ransac,usac_magsac,usac_accurate "
+    "and,\n"
     "                      when built in, poselib and superansac\n"
     "  --threshold-px PX   inlier threshold of every method (default 1, OpenCV's)\n"
     "  --true-px PX        a match is a true inlier when its Sampson distance to the true E is\n"
@@ -213,8 +215,8 @@ void realPairs(const Options& o, std::vector<Pair>& out)
             p.trueRatio = trueRatio(p, o.truePx);
             out.push_back(std::move(p));
             if ((k + 1) % 20 == 0 || k + 1 == pairs.size())
-                std::fprintf(stderr, "real_pairs: %s: %zu/%zu pairs matched\n", name.c_str(),
-                             k + 1, pairs.size());
+                std::fprintf(stderr, "real_pairs: %s: %zu/%zu pairs matched\n", name.c_str(), k + 1,
+                             pairs.size());
         }
     }
 }
@@ -241,7 +243,8 @@ void railPairs(const Options& o, std::vector<Pair>& out)
                 p.p1 = m.points1;
                 p.p2 = m.points2;
                 p.K = K;
-                p.R = essential_samples::relativeRotation(poses[size_t(i)], poses[size_t(i + offset)]);
+                p.R = essential_samples::relativeRotation(poses[size_t(i)],
+                                                          poses[size_t(i + offset)]);
                 p.t = essential_samples::relativeTranslation(poses[size_t(i)],
                                                              poses[size_t(i + offset)]);
                 p.rotationDeg = angleDeg(p.R);
@@ -320,8 +323,8 @@ double meanOf(const std::vector<double>& v)
 }
 
 /** One table: a row per method over the given runs. */
-std::string methodTable(const std::vector<Method>& methods, const std::map<std::string, Cell>& cells,
-                        int pairs)
+std::string methodTable(const std::vector<Method>& methods,
+                        const std::map<std::string, Cell>& cells, int pairs)
 {
     std::ostringstream md;
     md << "| method | AUC@5 | AUC@10 | AUC@20 | right | no pose | median / mean ms |\n"
@@ -339,10 +342,10 @@ std::string methodTable(const std::vector<Method>& methods, const std::map<std::
             none += !r.posed;
         }
         const double n = double(err.size());
-        md << cv::format("| %s | %.3f | %.3f | %.3f | %.3f | %d | %.1f / %.1f |\n",
-                         m.label.c_str(), essential_bench::poseAuc(err, 5),
-                         essential_bench::poseAuc(err, 10), essential_bench::poseAuc(err, 20),
-                         right / n, none, essential_bench::median(ms), meanOf(ms));
+        md << cv::format("| %s | %.3f | %.3f | %.3f | %.3f | %d | %.1f / %.1f |\n", m.label.c_str(),
+                         essential_bench::poseAuc(err, 5), essential_bench::poseAuc(err, 10),
+                         essential_bench::poseAuc(err, 20), right / n, none,
+                         essential_bench::median(ms), meanOf(ms));
     }
     return md.str();
 }
@@ -498,17 +501,19 @@ int run(int argc, char** argv)
         std::vector<size_t> methodOrder(o.methods.size());
         std::iota(methodOrder.begin(), methodOrder.end(), size_t(0));
         std::shuffle(methodOrder.begin(), methodOrder.end(), order);
-        const std::uint64_t seed = o.seed * 0x9E3779B97F4A7C15ULL ^ std::hash<std::string>()(p.name);
-        std::string line = cv::format("real_pairs: %zu/%zu %s (%zu matches, true %.2f, rot %.0f):",
-                                      pi + 1, pairs.size(), p.name.c_str(), p.p1.size(),
-                                      p.trueRatio, p.rotationDeg);
+        const std::uint64_t seed =
+            o.seed * 0x9E3779B97F4A7C15ULL ^ std::hash<std::string>()(p.name);
+        std::string line =
+            cv::format("real_pairs: %zu/%zu %s (%zu matches, true %.2f, rot %.0f):", pi + 1,
+                       pairs.size(), p.name.c_str(), p.p1.size(), p.trueRatio, p.rotationDeg);
         for (size_t mi : methodOrder) {
             const Method& m = o.methods[mi];
             essential_bench::RunOptions ro;
             ro.timePose = true;
             Run r;
             essential_bench::MethodOutcome out;
-            if (p.p1.size() >= 5) out = essential_bench::runMethod(m, p.K, p.p1, p.p2, seed, p.name, ro);
+            if (p.p1.size() >= 5)
+                out = essential_bench::runMethod(m, p.K, p.p1, p.p2, seed, p.name, ro);
             r.ms = out.cpuMs;
             r.posed = out.posed;
             if (out.posed) {
@@ -525,7 +530,8 @@ int run(int argc, char** argv)
                                   r.tErr);
         }
         for (const Method& m : o.methods)
-            line += cv::format(" %s %.1f", m.label.c_str(), cells[p.set][m.label].runs.back().error);
+            line +=
+                cv::format(" %s %.1f", m.label.c_str(), cells[p.set][m.label].runs.back().error);
         if (csv.is_open()) csv.flush();
         std::fprintf(stderr, "%s\n", line.c_str());
     }

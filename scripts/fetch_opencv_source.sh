@@ -55,7 +55,7 @@ fi
 [[ $# -eq 1 ]] || die "usage: fetch_opencv_source.sh [--full] DEST"
 dest=$1
 
-binary_package=libopencv-calib3d-dev
+binary_package=libopencv-core-dev # in every version (5.0 has no calib3d package)
 source_package=$(dpkg-query -W -f='${source:Package}' "$binary_package" 2>/dev/null) ||
     die "$binary_package is not installed (dpkg-query): the tests are those of the installed OpenCV"
 version=$(dpkg-query -W -f='${source:Version}' "$binary_package")

@@ -32,6 +32,11 @@ int depthOf(const py::dtype& dt)
     if (kind == 'i' && size == 2) return CV_16S;
     if (kind == 'i' && size == 4) return CV_32S;
     if (kind == 'f' && size == 2 && kReadsFloat16) return CV_16F;
+#if CV_VERSION_MAJOR >= 5
+    // OpenCV 5 has unsigned 32-bit and boolean depths, and its cv2 reads such arrays as them.
+    if (kind == 'u' && size == 4) return CV_32U;
+    if (kind == 'b' && size == 1) return CV_Bool;
+#endif
     if (kind == 'f' && size == 4) return CV_32F;
     if (kind == 'f' && size == 8) return CV_64F;
     return -1;

@@ -38,9 +38,8 @@ python/tests/test_layouts.py:
   many channels; other shapes are n-dimensional Mats (which the estimators then reject).
   int64 and uint64 arrays are converted to float64, exactly for |values| < 2^53 (cv2 casts them
   to int32, which wraps larger values silently).
-Anything else (lists, bool / uint32 / complex / object arrays, float16 before OpenCV 4.8, strings)
-is refused:
-returns false and, when `why` is given, says what was expected. */
+Anything else (lists, complex / object arrays, bool and uint32 before OpenCV 5, float16 before 4.8,
+strings) is refused: returns false and, when `why` is given, says what was expected. */
 bool toInputMat(py::handle src, InputMat& out, std::string* why);
 
 /** A Mat as cv2 returns it: None when empty; otherwise a new numpy array of the Mat's depth,

@@ -19,9 +19,24 @@ params=$(awk -v fx="$fx" -v fy="$fy" -v cx="$cx" -v cy="$cy" \
     'BEGIN { printf "%.12g,%.12g,%.12g,%.12g", fx, fy, cx + 0.5, cy + 0.5 }')
 rm -f "$out"
 export QT_QPA_PLATFORM=offscreen
-colmap feature_extractor --database_path "$out" --image_path "$image_dir" \
+# COLMAP 3.x (Debian 12 and 13) names the GPU switches Sift*.use_gpu; 4.x (Debian unstable)
+# Feature*.use_gpu. Asked of the program itself.
+extract_gpu=--SiftExtraction.use_gpu
+match_gpu=--SiftMatching.use_gpu
+help=$(colmap feature_extractor -h 2>&1 || true)
+if grep -q -- '--FeatureExtraction.use_gpu' <<<"$help"; then
+    extract_gpu=--FeatureExtraction.use_gpu
+    match_gpu=--FeatureMatching.use_gpu
+fi
+if ! colmap feature_extractor --database_path "$out" --image_path "$image_dir" \
     --ImageReader.camera_model PINHOLE --ImageReader.single_camera 1 \
     --ImageReader.camera_params "$params" \
-    --SiftExtraction.use_gpu 0 --SiftExtraction.max_num_features "$max_features" >"$out.log" 2>&1
-colmap exhaustive_matcher --database_path "$out" --SiftMatching.use_gpu 0 >>"$out.log" 2>&1
+    "$extract_gpu" 0 --SiftExtraction.max_num_features "$max_features" >"$out.log" 2>&1; then
+    tail -n 20 "$out.log" >&2
+    exit 1
+fi
+if ! colmap exhaustive_matcher --database_path "$out" "$match_gpu" 0 >>"$out.log" 2>&1; then
+    tail -n 20 "$out.log" >&2
+    exit 1
+fi
 echo "created $out (camera PINHOLE $params)"

@@ -3,7 +3,7 @@
 # CONSUMER_BINARY_DIR, CXX_COMPILER.
 cmake_minimum_required(VERSION 3.16)
 
-foreach(var MAIN_BUILD_DIR LIBRARY_FILE PREFIX CONSUMER_SOURCE_DIR CONSUMER_BINARY_DIR)
+foreach(var MAIN_BUILD_DIR LIBRARY_FILE PREFIX INCLUDE_SUFFIX CONSUMER_SOURCE_DIR CONSUMER_BINARY_DIR)
   if(NOT DEFINED ${var} OR "${${var}}" STREQUAL "")
     message(FATAL_ERROR "install_and_consume.cmake: ${var} is not set")
   endif()
@@ -30,9 +30,9 @@ run_step("cmake --install"
 
 # The installed layout that consumers rely on.
 set(expected
-  include/opencv4/opencv2/essential.hpp
-  include/opencv4/opencv2/essential/params.hpp
-  include/opencv4/opencv2/essential/solver.hpp
+  include/${INCLUDE_SUFFIX}/opencv2/essential.hpp
+  include/${INCLUDE_SUFFIX}/opencv2/essential/params.hpp
+  include/${INCLUDE_SUFFIX}/opencv2/essential/solver.hpp
   lib/cmake/opencv_essential/opencv_essentialConfig.cmake
   lib/cmake/opencv_essential/opencv_essentialConfigVersion.cmake
   lib/cmake/opencv_essential/opencv_essentialTargets.cmake)

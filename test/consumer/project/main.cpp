@@ -1,8 +1,8 @@
 // This file is part of opencv_essential, licensed under the Apache License, Version 2.0.
 // See the LICENSE file at the top of the source tree.
 //
-// Consumer of the installed package: builds against <prefix>/include/opencv4 and links
-// libopencv_essential through find_package(opencv_essential CONFIG REQUIRED).
+// Consumer of the installed package: builds against <prefix>/include/opencv4 (opencv5 with OpenCV
+// 5) and links libopencv_essential through find_package(opencv_essential CONFIG REQUIRED).
 
 #include <opencv2/essential.hpp>
 

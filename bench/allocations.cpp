@@ -35,7 +35,7 @@ calls run on one thread and only the totals are read. */
 std::atomic<long long> allocationCount{0};
 std::atomic<bool> counting{false};
 
-void* allocate(std::size_t size)
+[[gnu::noinline]] void* allocate(std::size_t size)
 {
     if (counting.load(std::memory_order_relaxed))
         allocationCount.fetch_add(1, std::memory_order_relaxed);
@@ -45,17 +45,17 @@ void* allocate(std::size_t size)
 
 } // namespace
 
-void* operator new(std::size_t size)
+[[gnu::noinline]] void* operator new(std::size_t size)
 {
     return allocate(size);
 }
 
-void* operator new[](std::size_t size)
+[[gnu::noinline]] void* operator new[](std::size_t size)
 {
     return allocate(size);
 }
 
-void* operator new(std::size_t size, const std::nothrow_t&) noexcept
+[[gnu::noinline]] void* operator new(std::size_t size, const std::nothrow_t&) noexcept
 {
     try {
         return allocate(size);
@@ -64,7 +64,7 @@ void* operator new(std::size_t size, const std::nothrow_t&) noexcept
     }
 }
 
-void* operator new[](std::size_t size, const std::nothrow_t&) noexcept
+[[gnu::noinline]] void* operator new[](std::size_t size, const std::nothrow_t&) noexcept
 {
     try {
         return allocate(size);
@@ -73,9 +73,10 @@ void* operator new[](std::size_t size, const std::nothrow_t&) noexcept
     }
 }
 
-// GCC 14 inlines these into the std::vector code of main and then, seeing the allocation and
-// the free in one function, warns of a free at an offset (-Wfree-nonheap-object, a false
-// positive); out of line, each operator is what the replaced global one is: a call.
+// GCC 14 inlines these (and the operators new above) into the std::vector code of main and then,
+// seeing malloc and free in one function, warns of a free at an offset (-Wfree-nonheap-object) or
+// of a sized delete of malloc's memory (-Wmismatched-new-delete), both false positives; out of
+// line, each operator is what the replaced global one is: a call.
 [[gnu::noinline]] void operator delete(void* p) noexcept
 {
     std::free(p);

@@ -79,21 +79,14 @@ if [[ "${ESSENTIAL_SANITIZE:-1}" != 0 ]]; then
     done
 fi
 
-# Other OpenCV versions, each in a Debian root file system (scripts/test_in_debian.sh, cached
-# outside the clone): Debian 13's OpenCV 4.10 unless ESSENTIAL_DEBIAN13=0; OpenCV 5.0 from
-# experimental only with ESSENTIAL_OPENCV5=1 (its port is not complete: docs/OPENCV_VERSIONS.md).
-# Making a root needs root or sudo; without either the stage is skipped, and says so.
-debian_stage() {
-    local name=$1 log summary
-    echo
-    echo "== $2 in a Debian root file system (scripts/test_in_debian.sh $name) =="
-    if [[ $(id -u) -ne 0 ]]; then
-        echo "test.sh: SKIPPED the $name stage: debootstrap and chroot need root (run as root)"
-        return 0
-    fi
+# Runs a stage whose output ends with a line "PREFIX: N passed, M failed" and adds its counts to
+# passed / failed; a stage that prints no such line (a build error) counts as one failure.
+run_summary_stage() {
+    local prefix=$1 log summary
+    shift
     log=$(mktemp)
-    scripts/test_in_debian.sh "$name" 2>&1 | tee "$log" || true
-    summary=$(grep -E "^debian-$name: [0-9]+ passed, [0-9]+ failed$" "$log" | tail -n1 || true)
+    "$@" 2>&1 | tee "$log" || true
+    summary=$(grep -E "^$prefix: [0-9]+ passed, [0-9]+ failed$" "$log" | tail -n1 || true)
     rm -f "$log"
     if [[ -z "$summary" ]]; then
         failed=$((failed + 1))
@@ -101,6 +94,20 @@ debian_stage() {
         passed=$((passed + $(sed -E 's/^[^:]*: ([0-9]+) passed.*/\1/' <<<"$summary")))
         failed=$((failed + $(sed -E 's/.* ([0-9]+) failed$/\1/' <<<"$summary")))
     fi
+}
+
+# Other OpenCV versions, each in a Debian root file system (scripts/test_in_debian.sh, cached
+# outside the clone): Debian 13's OpenCV 4.10 unless ESSENTIAL_DEBIAN13=0; OpenCV 5.0 from
+# experimental only with ESSENTIAL_OPENCV5=1 (its port is not complete: docs/OPENCV_VERSIONS.md).
+# Making a root needs root (debootstrap, chroot); otherwise the stage is skipped, and says so.
+debian_stage() {
+    echo
+    echo "== $2 in a Debian root file system (scripts/test_in_debian.sh $1) =="
+    if [[ $(id -u) -ne 0 ]]; then
+        echo "test.sh: SKIPPED the $1 stage: debootstrap and chroot need root (run as root)"
+        return 0
+    fi
+    run_summary_stage "debian-$1" scripts/test_in_debian.sh "$1"
 }
 if [[ "${ESSENTIAL_DEBIAN13:-1}" != 0 ]]; then
     debian_stage trixie "Debian 13, OpenCV 4.10"
@@ -112,16 +119,7 @@ fi
 if [[ "${ESSENTIAL_INTREE:-1}" != 0 ]]; then
     echo
     echo "== inside an OpenCV 4.6 source build (scripts/test_in_opencv.sh) =="
-    intree_log=$(mktemp)
-    scripts/test_in_opencv.sh 2>&1 | tee "$intree_log" || true
-    intree_summary=$(grep -E '^in-tree: [0-9]+ passed, [0-9]+ failed$' "$intree_log" | tail -n1 || true)
-    rm -f "$intree_log"
-    if [[ -z "$intree_summary" ]]; then
-        failed=$((failed + 1))
-    else
-        passed=$((passed + $(sed -E 's/^in-tree: ([0-9]+) passed.*/\1/' <<<"$intree_summary")))
-        failed=$((failed + $(sed -E 's/.* ([0-9]+) failed$/\1/' <<<"$intree_summary")))
-    fi
+    run_summary_stage in-tree scripts/test_in_opencv.sh
 fi
 
 echo

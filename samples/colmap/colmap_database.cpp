@@ -45,9 +45,9 @@ std::vector<unsigned char> matrixBlob(const SqliteStatement& row, int rowsColumn
 
 } // namespace
 
-ColmapDatabase::ColmapDatabase(const std::string& path, bool readOnly) : connection_(path, readOnly)
+ColmapDatabase::ColmapDatabase(const std::string& path, bool readOnly)
+    : connection_(path, readOnly), schema_(checkColmapSchema(connection_))
 {
-    checkColmapSchema(connection_);
 }
 
 std::map<std::int64_t, ColmapCamera> ColmapDatabase::cameras()

@@ -1,15 +1,17 @@
 // This file is part of opencv_essential, licensed under the Apache License, Version 2.0.
 // See the LICENSE file at the top of the source tree.
 //
-// Reading a COLMAP 3.8 database (SQLite): cameras, images, keypoints, raw matches and the
-// configuration of the two-view geometries already stored. Blobs are read as COLMAP writes them:
-// row-major, little-endian float32 keypoints (rows x cols, cols 2, 4 or 6, x and y first) and
-// uint32 match pairs (rows x 2). Every malformed blob is a DatabaseError naming its row.
+// Reading a COLMAP database (SQLite; 3.x, or 3.12+ with rigs: colmap_schema.hpp): cameras, images,
+// keypoints, raw matches and the configuration of the two-view geometries already stored. Blobs are
+// read as COLMAP writes them: row-major, little-endian float32 keypoints (rows x cols, cols 2, 4 or
+// 6, x and y first) and uint32 match pairs (rows x 2). Every malformed blob is a DatabaseError
+// naming its row.
 
 #ifndef ESSENTIAL_SAMPLES_COLMAP_COLMAP_DATABASE_HPP
 #define ESSENTIAL_SAMPLES_COLMAP_COLMAP_DATABASE_HPP
 
 #include "colmap/camera_models.hpp"
+#include "colmap/colmap_schema.hpp"
 #include "colmap/sqlite_connection.hpp"
 
 #include <opencv2/core.hpp>
@@ -45,8 +47,11 @@ struct StoredGeometry
 class ColmapDatabase
 {
 public:
-    /** Opens an existing file and checks it is a COLMAP 3.8 database (checkColmapSchema). */
+    /** Opens an existing file and checks it is a COLMAP database (checkColmapSchema). */
     ColmapDatabase(const std::string& path, bool readOnly);
+
+    /** The schema generation found when the file was opened. */
+    ColmapSchema schema() const { return schema_; }
 
     std::map<std::int64_t, ColmapCamera> cameras();
     std::map<std::int64_t, ColmapImage> images();
@@ -63,6 +68,7 @@ public:
 
 private:
     SqliteConnection connection_;
+    ColmapSchema schema_;
 };
 
 } // namespace essential_colmap

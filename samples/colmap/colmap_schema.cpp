@@ -19,7 +19,7 @@ struct TableColumns
     std::vector<const char*> columns;
 };
 
-// What the tools read and write, as COLMAP 3.8's database_creator makes it.
+// What the tools read and write, as COLMAP 3.8's database_creator makes it (4.2's has them all).
 const TableColumns kRequired[] = {
     {"cameras", {"camera_id", "model", "width", "height", "params", "prior_focal_length"}},
     {"images", {"image_id", "name", "camera_id"}},
@@ -41,13 +41,20 @@ std::vector<std::string> columnsOf(SqliteConnection& connection, const std::stri
 
 } // namespace
 
-void checkColmapSchema(SqliteConnection& connection)
+const char* schemaName(ColmapSchema schema)
 {
-    const std::string notColmap = "'" + connection.path() + "' is not a COLMAP 3.8 database: ";
-    for (const char* later : {"rigs", "frames"})
-        if (!columnsOf(connection, later).empty())
-            throw DatabaseError(notColmap + "it has a table '" + later +
-                                "' (a later COLMAP schema, which this tool does not read)");
+    return schema == ColmapSchema::WithRigs ? "COLMAP 3.12+ (rigs)" : "COLMAP 3.x";
+}
+
+ColmapSchema checkColmapSchema(SqliteConnection& connection)
+{
+    const std::string notColmap = "'" + connection.path() + "' is not a COLMAP database: ";
+    const bool rigs = !columnsOf(connection, "rigs").empty();
+    const bool frames = !columnsOf(connection, "frames").empty();
+    if (rigs != frames)
+        throw DatabaseError(notColmap + "it has a table '" + (rigs ? "rigs" : "frames") +
+                            "' but no table '" + (rigs ? "frames" : "rigs") +
+                            "' (COLMAP 3.12 and later make both)");
     for (const TableColumns& required : kRequired) {
         const std::vector<std::string> present = columnsOf(connection, required.table);
         if (present.empty()) throw DatabaseError(notColmap + "no table '" + required.table + "'");
@@ -56,6 +63,7 @@ void checkColmapSchema(SqliteConnection& connection)
                 throw DatabaseError(notColmap + "table '" + required.table + "' has no column '" +
                                     column + "'");
     }
+    return rigs ? ColmapSchema::WithRigs : ColmapSchema::Colmap3;
 }
 
 } // namespace essential_colmap

@@ -1,9 +1,15 @@
 // This file is part of opencv_essential, licensed under the Apache License, Version 2.0.
 // See the LICENSE file at the top of the source tree.
 //
-// The check that a SQLite file is a COLMAP 3.8 database: every table and column the tools read or
-// write is there, and none of the tables a later COLMAP schema added (rigs, frames: COLMAP 3.12 and
-// 4.x moved the camera of an image into them, so that a 3.8 reading would be wrong).
+// The check that a SQLite file is a COLMAP database the tools can read and write: every table and
+// column they read or write is there. Two generations are read: COLMAP 3.x up to 3.11 (Debian 12's
+// 3.8, Debian 13's 3.10) and the schema with rigs and frames (COLMAP 3.12 and 4.x; Debian
+// unstable's 4.2). The later schema adds tables (rigs, rig_sensors, frames, frame_data,
+// pose_priors) and two_view_geometries columns (camera1, camera2), but an image keeps its
+// camera_id, the pair id keeps its encoding and two_view_geometries keeps every column the tools
+// write, so a pair is verified and written the same way in both; the added columns are left NULL,
+// as COLMAP 4.2's own matcher leaves them for a calibrated pair (checked on its database of the
+// rail frames).
 
 #ifndef ESSENTIAL_SAMPLES_COLMAP_COLMAP_SCHEMA_HPP
 #define ESSENTIAL_SAMPLES_COLMAP_COLMAP_SCHEMA_HPP
@@ -12,8 +18,18 @@ namespace essential_colmap {
 
 class SqliteConnection;
 
-/** Throws DatabaseError naming the first missing table or column, or the later schema's table. */
-void checkColmapSchema(SqliteConnection& connection);
+/** The schema generation of a COLMAP database. */
+enum class ColmapSchema {
+    Colmap3, ///< no rigs table: COLMAP 3.0 to 3.11
+    WithRigs ///< rigs and frames tables: COLMAP 3.12 and 4.x
+};
+
+/** The name of a generation, as the tools print it ("COLMAP 3.x", "COLMAP 3.12+ (rigs)"). */
+const char* schemaName(ColmapSchema schema);
+
+/** Throws DatabaseError naming the first missing table or column; returns the generation. A rigs
+table without a frames table (or the other way round) is neither generation and is refused. */
+ColmapSchema checkColmapSchema(SqliteConnection& connection);
 
 } // namespace essential_colmap
 

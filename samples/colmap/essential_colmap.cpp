@@ -2,7 +2,7 @@
 // See the LICENSE file at the top of the source tree.
 //
 // essential_colmap: COLMAP's geometric verification done by the module. Reads the cameras, images,
-// keypoints and raw matches of a COLMAP 3.8 database, estimates an essential matrix for every
+// keypoints and raw matches of a COLMAP database, estimates an essential matrix for every
 // matched pair in parallel (findEssentialMatBatch) and writes two_view_geometries as COLMAP's own
 // verification does, in one transaction; `colmap mapper` then reconstructs from it.
 
@@ -36,10 +36,11 @@ const char* const kUsage =
     "                        [--min-inliers K] [--pairs all|unverified] [--max-iterations N]\n"
     "                        [--seed S] [--dry-run] [--json]\n"
     "\n"
-    "Verifies the matched image pairs of a COLMAP 3.8 database with cv::essential and writes\n"
-    "its two_view_geometries table (config, inlier matches, E, F, relative pose) in one\n"
-    "transaction; nothing else in the database changes. Keypoints are undistorted with each\n"
-    "camera's model (SIMPLE_PINHOLE, PINHOLE, SIMPLE_RADIAL, RADIAL, OPENCV).\n"
+    "Verifies the matched image pairs of a COLMAP database (3.x, or 3.12+ with rigs) with\n"
+    "cv::essential and writes its two_view_geometries table (config, inlier matches, E, F,\n"
+    "relative pose) in one transaction; nothing else in the database changes. Keypoints are\n"
+    "undistorted with each camera's model (SIMPLE_PINHOLE, PINHOLE, SIMPLE_RADIAL, RADIAL,\n"
+    "OPENCV).\n"
     "\n"
     "  --database DB.db      the COLMAP database (after feature extraction and matching)\n"
     "  --threads N           worker threads (default: all cores)\n"
@@ -235,6 +236,7 @@ int run(int argc, char** argv)
 
     if (options.json) {
         nlohmann::json out = {{"database", options.database},
+                              {"schema", essential_colmap::schemaName(database.schema())},
                               {"dry_run", options.dryRun},
                               {"solver", verification.params.solver},
                               {"threshold_px", verification.params.threshold},
@@ -267,8 +269,9 @@ int run(int argc, char** argv)
                         entry["after"]["config"].get<std::string>().c_str(),
                         entry["after"]["inliers"].get<int>(), entry["matches"].get<int>());
         }
-    std::printf("%s: %zu pairs verified with %s, threshold %.3g px, %d threads\n",
-                options.database.c_str(), result.records.size(), verification.params.solver.c_str(),
+    std::printf("%s (%s): %zu pairs verified with %s, threshold %.3g px, %d threads\n",
+                options.database.c_str(), essential_colmap::schemaName(database.schema()),
+                result.records.size(), verification.params.solver.c_str(),
                 verification.params.threshold, threads);
     std::printf("time: %.1f ms reading and undistorting, %.1f ms estimating (%.0f pairs/s), "
                 "%.1f ms writing, %.1f ms in all\n",

@@ -1,7 +1,7 @@
 // This file is part of opencv_essential, licensed under the Apache License, Version 2.0.
 // See the LICENSE file at the top of the source tree.
 //
-// The COLMAP database reader and writer (samples/colmap) on a database COLMAP 3.8 itself created
+// The COLMAP database reader and writer (samples/colmap) on a database the installed COLMAP created
 // (the ctest fixture colmap_make_database: five rail-a frames, CPU SIFT, exhaustive matching):
 // what is read is what COLMAP wrote, the verified pairs agree with the true poses and with COLMAP's
 // own verification, and the rows written are in COLMAP's format with every other table untouched.
@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <cstring>
 #include <fstream>
+#include <iostream>
 #include <set>
 
 using namespace essential_colmap;
@@ -330,4 +331,98 @@ TEST(ColmapDatabase, GuessedFocalLengthGivesUncalibrated)
     ASSERT_EQ(v.records.size(), 10u);
     for (const TwoViewGeometryRecord& r : v.records)
         EXPECT_EQ(r.config, CONFIG_UNCALIBRATED) << "pair " << r.pairId;
+}
+
+namespace {
+
+// The tables and columns COLMAP 3.12+ adds (as COLMAP 4.2.1's database_creator makes them; one
+// rig of one camera, one frame per image, as its feature extractor fills them for a single
+// camera), and what takes them out again. Both generations are made of one fixture database, of
+// whichever generation the installed COLMAP writes.
+const char* const kAddRigs =
+    "CREATE TABLE rigs (rig_id INTEGER PRIMARY KEY AUTOINCREMENT NOT NULL, ref_sensor_id INTEGER "
+    "NOT NULL, ref_sensor_type INTEGER NOT NULL);"
+    "CREATE TABLE rig_sensors (rig_id INTEGER NOT NULL, sensor_id INTEGER NOT NULL, sensor_type "
+    "INTEGER NOT NULL, sensor_from_rig BLOB);"
+    "CREATE TABLE frames (frame_id INTEGER PRIMARY KEY AUTOINCREMENT NOT NULL, rig_id INTEGER NOT "
+    "NULL);"
+    "CREATE TABLE frame_data (frame_id INTEGER NOT NULL, data_id INTEGER NOT NULL, sensor_id "
+    "INTEGER NOT NULL, sensor_type INTEGER NOT NULL);"
+    "ALTER TABLE two_view_geometries ADD COLUMN camera1 BLOB;"
+    "ALTER TABLE two_view_geometries ADD COLUMN camera2 BLOB;"
+    "INSERT INTO rigs SELECT camera_id, camera_id, 0 FROM cameras;"
+    "INSERT INTO frames SELECT image_id, camera_id FROM images;"
+    "INSERT INTO frame_data SELECT image_id, image_id, camera_id, 0 FROM images;";
+const char* const kDropRigs = "DROP TABLE frame_data; DROP TABLE frames; DROP TABLE rig_sensors;"
+                              "DROP TABLE rigs;"
+                              "ALTER TABLE two_view_geometries DROP COLUMN camera1;"
+                              "ALTER TABLE two_view_geometries DROP COLUMN camera2;";
+
+bool hasTable(ColmapDatabase& db, const std::string& table)
+{
+    SqliteStatement info(db.connection(), "PRAGMA table_info(" + table + ")");
+    return info.step();
+}
+
+} // namespace
+
+TEST(ColmapDatabase, BothSchemaGenerationsVerifiedAndWrittenAlike)
+{
+    const std::string colmap3 = colmap_test::copyOfColmapDatabase("database_schema_3x");
+    const std::string withRigs = colmap_test::copyOfColmapDatabase("database_schema_rigs");
+    if (colmap3.empty()) GTEST_SKIP() << colmap_test::missingDatabaseReason();
+    {
+        ColmapDatabase fixture(colmap3, false);
+        const bool madeWithRigs = fixture.schema() == ColmapSchema::WithRigs;
+        ASSERT_EQ(madeWithRigs, hasTable(fixture, "rigs"));
+        std::cout << "[ INFO     ] the installed COLMAP made a " << schemaName(fixture.schema())
+                  << " database; the other generation is made of it\n";
+        if (madeWithRigs) {
+            // The rigs of a 4.x database hold what kAddRigs writes (one rig and frame each).
+            fixture.connection().execute(kDropRigs);
+        }
+    }
+    {
+        ColmapDatabase other(withRigs, false);
+        if (other.schema() == ColmapSchema::Colmap3) other.connection().execute(kAddRigs);
+    }
+    ColmapDatabase a(colmap3, false), b(withRigs, false);
+    ASSERT_EQ(a.schema(), ColmapSchema::Colmap3);
+    ASSERT_EQ(b.schema(), ColmapSchema::WithRigs);
+    const std::vector<std::string> rigTables = {"rigs", "rig_sensors", "frames", "frame_data"};
+    std::map<std::string, std::string> before;
+    for (const std::string& table : rigTables)
+        before[table] = tableDump(b, table);
+
+    const Verification va = verifyPairs(a, VerificationOptions());
+    const Verification vb = verifyPairs(b, VerificationOptions());
+    ASSERT_EQ(va.records.size(), 10u);
+    ASSERT_EQ(vb.records.size(), va.records.size());
+    for (std::size_t i = 0; i < va.records.size(); ++i) {
+        EXPECT_EQ(va.records[i].pairId, vb.records[i].pairId);
+        EXPECT_EQ(va.records[i].config, vb.records[i].config);
+        EXPECT_TRUE(va.records[i].inlierMatches == vb.records[i].inlierMatches);
+        EXPECT_EQ(cv::norm(va.records[i].E - vb.records[i].E), 0.0);
+    }
+    writeTwoViewGeometries(a, va.records);
+    writeTwoViewGeometries(b, vb.records);
+    // Equal rows in both (the added columns left NULL, as COLMAP 4.2's matcher leaves them),
+    // and the rig tables as they were.
+    const std::string columns = "pair_id, rows, cols, data, config, F, E, H, qvec, tvec";
+    SqliteStatement ra(a.connection(), "SELECT " + columns + " FROM two_view_geometries");
+    SqliteStatement rb(b.connection(), "SELECT " + columns +
+                                           ", camera1 IS NULL AND camera2 IS NULL FROM "
+                                           "two_view_geometries");
+    std::size_t rows = 0;
+    while (ra.step()) {
+        ASSERT_TRUE(rb.step());
+        for (int c = 0; c < 10; ++c)
+            EXPECT_TRUE(ra.blob(c) == rb.blob(c)) << "column " << c << " of row " << rows;
+        EXPECT_EQ(rb.integer(10), 1) << "row " << rows;
+        ++rows;
+    }
+    EXPECT_FALSE(rb.step());
+    EXPECT_EQ(rows, va.records.size());
+    for (const std::string& table : rigTables)
+        EXPECT_EQ(tableDump(b, table), before[table]) << table;
 }

@@ -1,7 +1,7 @@
 // This file is part of opencv_essential, licensed under the Apache License, Version 2.0.
 // See the LICENSE file at the top of the source tree.
 //
-// essential_colmap never damages a database: a file that is not a COLMAP 3.8 database is refused
+// essential_colmap never damages a database: a file that is not a COLMAP database is refused
 // with a clear message and left unchanged byte for byte; an error part-way through writing rolls
 // everything back; --dry-run writes nothing; --pairs unverified leaves the verified rows as they
 // were.
@@ -64,7 +64,7 @@ TEST(ColmapSafety, NonColmapDatabaseRefusedAndUnchanged)
     runSql(path, "CREATE TABLE notes (id INTEGER PRIMARY KEY, text TEXT);"
                  "INSERT INTO notes (text) VALUES ('keep me');");
     expectRefusedUnchanged("safety_not_colmap", path,
-                           "is not a COLMAP 3.8 database: no table 'cameras'");
+                           "is not a COLMAP database: no table 'cameras'");
     EXPECT_THROW(ColmapDatabase(path, true), DatabaseError);
 }
 
@@ -84,12 +84,24 @@ TEST(ColmapSafety, MissingColumnRefusedByName)
                            "table 'two_view_geometries' has no column 'qvec'");
 }
 
-TEST(ColmapSafety, LaterSchemaRefused)
+TEST(ColmapSafety, HalfOfTheRigSchemaRefused)
 {
-    const std::string path = colmap_test::copyOfColmapDatabase("safety_later_schema");
+    // COLMAP 3.12+ makes rigs and frames together; one without the other is neither generation.
+    const std::string path = colmap_test::copyOfColmapDatabase("safety_half_rig_schema");
     if (path.empty()) GTEST_SKIP() << colmap_test::missingDatabaseReason();
-    runSql(path, "CREATE TABLE rigs (rig_id INTEGER PRIMARY KEY)");
-    expectRefusedUnchanged("safety_later_schema", path, "it has a table 'rigs'");
+    const bool made = [&] {
+        ColmapDatabase db(path, true);
+        return db.schema() == ColmapSchema::WithRigs;
+    }();
+    if (made) {
+        runSql(path, "DROP TABLE frame_data; DROP TABLE frames");
+        expectRefusedUnchanged("safety_half_rig_schema", path,
+                               "it has a table 'rigs' but no table 'frames'");
+    } else {
+        runSql(path, "CREATE TABLE frames (frame_id INTEGER PRIMARY KEY, rig_id INTEGER)");
+        expectRefusedUnchanged("safety_half_rig_schema", path,
+                               "it has a table 'frames' but no table 'rigs'");
+    }
 }
 
 TEST(ColmapSafety, ErrorMidWriteRollsBackEverything)

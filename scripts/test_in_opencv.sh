@@ -6,7 +6,7 @@
 #      of every case is checked against the scene's ground truth);
 #   3. the Python test of cv2.essential (modules/essential/misc/python/test/test_essential.py),
 #      through OpenCV's own runner modules/python/test/test.py.
-# Each test case counts once; the last line is "in-tree: N passed, M failed" (scripts/test.sh
+# Each test case counts once; the last line is "in-tree: N passed, M failed, K skipped" (scripts/test.sh
 # adds it to its total). Exits non-zero if anything failed. Extra arguments go to
 # opencv_test_essential (e.g. --gtest_filter=OpenCvLoop*).
 # Licensed under the Apache License, Version 2.0.
@@ -16,7 +16,7 @@ cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
 build=$(scripts/build_in_opencv.sh | tail -n1) || {
     echo "test_in_opencv.sh: the in-tree build failed"
-    echo "in-tree: 0 passed, 1 failed"
+    echo "in-tree: 0 passed, 1 failed, 0 skipped"
     exit 1
 }
 cache=$(dirname "$build")
@@ -24,8 +24,8 @@ src="$cache/opencv-4.6-src"
 results=$(mktemp -d)
 trap 'rm -rf "$results"' EXIT
 
-# Counts the test cases of a GoogleTest XML report: "passed failed" (skipped ones count as passed,
-# as in ctest); a missing or unreadable report is one failure.
+# Counts the test cases of a GoogleTest XML report: "passed failed skipped"; a missing or unreadable
+# report is one failure.
 count_xml() {
     /usr/bin/python3 - "$1" <<'EOF'
 import sys
@@ -33,27 +33,32 @@ import xml.etree.ElementTree as ET
 try:
     root = ET.parse(sys.argv[1]).getroot()
 except Exception:
-    print(0, 1)
+    print(0, 1, 0)
     sys.exit()
 cases = root.iter("testcase")
-passed = failed = 0
+passed = failed = skipped = 0
 for case in cases:
     if case.find("failure") is not None or case.find("error") is not None:
         failed += 1
+    elif case.find("skipped") is not None or case.get("result") == "skipped":
+        skipped += 1
     else:
         passed += 1
-print(passed, failed if passed + failed else 1)
+print(passed, failed if passed + failed + skipped else 1, skipped)
 EOF
 }
 
 total_passed=0
 total_failed=0
+total_skipped=0
 add_counts() {
-    local p f
-    read -r p f <<<"$1"
+    local p f k
+    read -r p f k <<<"$1"
+    k=${k:-0}
     total_passed=$((total_passed + p))
     total_failed=$((total_failed + f))
-    echo "test_in_opencv.sh: $2: $p passed, $f failed"
+    total_skipped=$((total_skipped + k))
+    echo "test_in_opencv.sh: $2: $p passed, $f failed, $k skipped"
 }
 
 start=$SECONDS
@@ -97,13 +102,16 @@ ran=$(sed -n 's/^Ran \([0-9]*\) tests\?.*/\1/p' "$results/python.log")
 bad=$(grep -cE '^(FAIL|ERROR): ' "$results/python.log")
 if [[ -z "$ran" || "$ran" -eq 0 ]]; then
     tail -n 40 "$results/python.log"
-    add_counts "0 1" "python"
+    add_counts "0 1 0" "python"
 else
     [[ $status -ne 0 && $bad -eq 0 ]] && bad=1
     [[ $bad -gt 0 ]] && grep -A30 -E '^(FAIL|ERROR): ' "$results/python.log" | head -n 80
-    add_counts "$((ran - bad)) $bad" "python"
+    skips=$(sed -n 's/^OK (skipped=\([0-9]*\)).*/\1/p; s/^FAILED (.*skipped=\([0-9]*\).*/\1/p' \
+        "$results/python.log" | tail -n1)
+    skips=${skips:-0}
+    add_counts "$((ran - bad - skips)) $bad $skips" "python"
 fi
 echo "test_in_opencv.sh: python tests took $((SECONDS - start)) s"
 
-echo "in-tree: ${total_passed} passed, ${total_failed} failed"
+echo "in-tree: ${total_passed} passed, ${total_failed} failed, ${total_skipped} skipped"
 [[ $total_failed -eq 0 ]]

@@ -3,7 +3,7 @@
 
 #include "solvers/gauss_newton.hpp"
 
-#include <Eigen/LU>
+#include "optim/small_linear_solve.hpp"
 
 namespace cv {
 namespace essential {
@@ -22,9 +22,9 @@ bool GaussNewtonSolver::converge(geometry::EssentialPose& pose, const Point2d* x
         if (cost < settings_.convergedCost) return true;
         if (previousCost >= 0.0 && cost > settings_.divergenceFactor * previousCost) return false;
         previousCost = cost;
-        const Eigen::PartialPivLU<geometry::Matrix5d> lu(J);
-        const geometry::Vector5d step = lu.solve(-r);
-        if (!step.allFinite()) return false; // singular J: degenerate sample or start
+        geometry::Vector5d step;
+        // Singular J: a degenerate sample or start.
+        if (!optim::solvePartialPivot<5>(J, -r, step) || !step.allFinite()) return false;
         pose.update(step);
     }
     return evaluateMinimalSet(pose, x1, x2, r, J) < settings_.convergedCost;

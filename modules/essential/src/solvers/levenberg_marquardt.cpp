@@ -3,6 +3,8 @@
 
 #include "solvers/levenberg_marquardt.hpp"
 
+#include "optim/small_linear_solve.hpp"
+
 #include <Eigen/Cholesky>
 
 namespace cv {
@@ -24,7 +26,10 @@ bool LevenbergMarquardtSolver::converge(geometry::EssentialPose& pose, const Poi
         ++lastIterations_;
         geometry::Matrix5d damped = A;
         damped.diagonal() *= 1.0 + lambda;
-        const geometry::Vector5d step = damped.ldlt().solve(-g);
+        geometry::Vector5d step;
+        // Not positive definite (a zero column of J): the pivoting LDLT, which treats a zero
+        // pivot as a zero component of the step, as before.
+        if (!optim::solveCholesky<5>(damped, -g, step)) step = damped.ldlt().solve(-g);
         geometry::EssentialPose trial = pose;
         trial.update(step);
         const double trialCost = minimalSetCost(trial, x1, x2);

@@ -8,9 +8,9 @@
 #define OPENCV_ESSENTIAL_SOLVERS_MINIMAL_SET_PROBLEM_HPP
 
 #include "geometry/essential_parameterisation.hpp"
+#include "optim/small_linear_solve.hpp"
 
 #include <Eigen/Eigenvalues>
-#include <Eigen/LU> // determinant
 #include <opencv2/core.hpp>
 
 namespace cv {
@@ -68,7 +68,7 @@ inline bool constraintsAreDependent(const Point2d* x1, const Point2d* x2)
     for (int i = 0; i < 5; ++i)
         for (int j = 0; j <= i; ++j)
             G(i, j) = G(j, i) = q2[i].dot(q2[j]) * q1[i].dot(q1[j]);
-    return !(G.determinant() > kMinGramDeterminant);
+    return !(optim::determinantPartialPivot<5>(G) > kMinGramDeterminant);
 }
 
 /** Residuals r (5) and Jacobian J (5x5) of the sample at pose. Returns the squared norm of r. */

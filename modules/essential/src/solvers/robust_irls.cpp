@@ -6,6 +6,7 @@
 #include "geometry/essential_decomposition.hpp"
 #include "geometry/essential_parameterisation.hpp"
 #include "geometry/sampson.hpp"
+#include "optim/small_linear_solve.hpp"
 #include "solvers/minimal_set_problem.hpp"
 #include "solvers/solution_output.hpp"
 
@@ -227,7 +228,9 @@ double RobustIrlsSolver::fit(EssentialPose& pose, const Point2d* x1, const Point
         for (int attempt = 0; attempt < 3; ++attempt) {
             Matrix5d damped = A;
             damped.diagonal() *= 1.0 + lambda;
-            const Vector5d step = damped.ldlt().solve(-b);
+            Vector5d step;
+            // Not positive definite (a zero column of J): the pivoting LDLT, as before.
+            if (!optim::solveCholesky<5>(damped, -b, step)) step = damped.ldlt().solve(-b);
             if (!step.allFinite()) return HUGE_VAL;
             EssentialPose trial = pose;
             trial.update(step);

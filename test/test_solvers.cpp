@@ -313,6 +313,23 @@ TEST(Solvers, CoplanarityCostVanishesAtTheTrueRotation)
     }
 }
 
+// The ranking's batched costs are the scalar definition's, bit for bit: the same operations in the
+// same order, only laid out over the 36 rotations (so the ranking, and every rate, is unchanged).
+TEST(Solvers, BatchedCoplanarityCostsEqualTheDefinition)
+{
+    using cv::essential::solvers::StartRotations;
+    for (uint64_t seed = 1; seed <= 200; ++seed) {
+        const auto scene = binProblem(seed % 2 == 0, 0, 90, seed);
+        double costs[StartRotations::kCount];
+        cv::essential::solvers::coplanarityCosts<5>(scene.x1.data(), scene.x2.data(), costs);
+        for (int i = 0; i < StartRotations::kCount; ++i)
+            ASSERT_EQ(costs[i],
+                      cv::essential::solvers::coplanarityCost(StartRotations::instance()[i],
+                                                              scene.x1.data(), scene.x2.data(), 5))
+                << "seed " << seed << " rotation " << i;
+    }
+}
+
 // Samples that constrain E less than five points do: the solvers must return nothing (not a
 // "solution" fitted to a rank-deficient system). Five copies of one correspondence (rank 1), and
 // two distinct correspondences repeated (rank 2).

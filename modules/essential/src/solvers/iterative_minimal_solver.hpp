@@ -87,7 +87,7 @@ public:
         const int extra = std::min(std::max(settings_.extraStarts, 0), kRanked);
         if (extra == 0) return 0;
         int order[kRanked];
-        rankStartRotations(x1, x2, 5, kRanked, order);
+        rankStartRotations(x1, x2, kRanked, order);
         for (int k = 0, tried = 0; k < kRanked && tried < extra; ++k) {
             pose = bestTranslationStart(x1, x2, 5, StartRotations::instance()[order[k]]);
             // A start that cannot put the sample in front of the cameras rarely leads to a root

@@ -35,6 +35,9 @@ public:
     }
 
     const Eigen::Matrix3d& operator[](int i) const { return rotations_[static_cast<size_t>(i)]; }
+    /** Entry (row, col) of every rotation, contiguous: entry(row, col)[i] = (*this)[i](row, col).
+    The layout lets the per-sample ranking run over all rotations at once in vector registers. */
+    const double* entry(int row, int col) const { return entries_[3 * row + col].data(); }
 
 private:
     StartRotations()
@@ -53,9 +56,14 @@ private:
             for (const Eigen::Vector3d& axis : axes)
                 rotations_[static_cast<size_t>(k++)] =
                     geometry::expSO3(axis * degrees * CV_PI / 180.0);
+        for (int i = 0; i < kCount; ++i)
+            for (int e = 0; e < 9; ++e)
+                entries_[static_cast<size_t>(e)][static_cast<size_t>(i)] =
+                    rotations_[static_cast<size_t>(i)](e / 3, e % 3);
     }
 
     std::array<Eigen::Matrix3d, kCount> rotations_;
+    alignas(32) std::array<std::array<double, kCount>, 9> entries_;
 };
 
 /** How far the rotation R is from explaining the sample with some translation: with c_i the unit
@@ -88,18 +96,63 @@ inline double coplanarityCost(const Eigen::Matrix3d& R, const Point2d* x1, const
            s02 * (s01 * s12 - s11 * s02);
 }
 
-/** Indices of the `count` candidates of StartRotations with the lowest coplanarity cost on the
-sample, best first (count at most 8). */
-inline void rankStartRotations(const Point2d* x1, const Point2d* x2, int n, int count, int* best)
+/** The coplanarity costs of all StartRotations on a sample of N points: costs[i] is exactly
+coplanarityCost(StartRotations::instance()[i], x1, x2, N), the same operations in the same order
+(test_solvers checks the equality bit for bit), computed point by point over all rotations at once
+so that the compiler keeps the rotations' sums in vector registers. A point whose normal has no
+length adds nothing, as there (the input is finite: the module refuses non-finite points). */
+template <int N>
+inline void coplanarityCosts(const Point2d* x1, const Point2d* x2,
+                             double costs[StartRotations::kCount])
 {
+    constexpr int K = StartRotations::kCount;
     const StartRotations& rotations = StartRotations::instance();
+    const double *r00 = rotations.entry(0, 0), *r01 = rotations.entry(0, 1),
+                 *r02 = rotations.entry(0, 2), *r10 = rotations.entry(1, 0),
+                 *r11 = rotations.entry(1, 1), *r12 = rotations.entry(1, 2),
+                 *r20 = rotations.entry(2, 0), *r21 = rotations.entry(2, 1),
+                 *r22 = rotations.entry(2, 2);
+    alignas(32) double s00[K] = {}, s01[K] = {}, s02[K] = {}, s11[K] = {}, s12[K] = {}, s22[K] = {};
+    for (int p = 0; p < N; ++p) {
+        const double u = x1[p].x, v = x1[p].y, x = x2[p].x, y = x2[p].y;
+        for (int i = 0; i < K; ++i) {
+            const double a0 = r00[i] * u + r01[i] * v + r02[i];
+            const double a1 = r10[i] * u + r11[i] * v + r12[i];
+            const double a2 = r20[i] * u + r21[i] * v + r22[i];
+            const double c0 = a1 - a2 * y, c1 = a2 * x - a0, c2 = a0 * y - a1 * x;
+            const double norm2 = c0 * c0 + c1 * c1 + c2 * c2;
+            // A zero normal has zero entries, so any finite weight adds exactly nothing, as
+            // skipping it does: there the divisor is 1 (norm2 + 1), elsewhere norm2 + 0 = norm2.
+            // Arithmetic on the comparison, not a select, keeps the loop vectorised (a select on
+            // a floating-point comparison counts as a possible trap and blocks it).
+            const double w = 1.0 / (norm2 + static_cast<double>(norm2 == 0.0));
+            s00[i] += w * c0 * c0;
+            s01[i] += w * c0 * c1;
+            s02[i] += w * c0 * c2;
+            s11[i] += w * c1 * c1;
+            s12[i] += w * c1 * c2;
+            s22[i] += w * c2 * c2;
+        }
+    }
+    for (int i = 0; i < K; ++i)
+        costs[i] = s00[i] * (s11[i] * s22[i] - s12[i] * s12[i]) -
+                   s01[i] * (s01[i] * s22[i] - s12[i] * s02[i]) +
+                   s02[i] * (s01[i] * s12[i] - s11[i] * s02[i]);
+}
+
+/** Indices of the `count` candidates of StartRotations with the lowest coplanarity cost on the
+five-point sample, best first (count at most 8). */
+inline void rankStartRotations(const Point2d* x1, const Point2d* x2, int count, int* best)
+{
+    double costs[StartRotations::kCount];
+    coplanarityCosts<5>(x1, x2, costs);
     double bestCost[8];
     for (int k = 0; k < count; ++k) {
         bestCost[k] = HUGE_VAL;
         best[k] = 0;
     }
     for (int i = 0; i < StartRotations::kCount; ++i) {
-        double cost = coplanarityCost(rotations[i], x1, x2, n);
+        double cost = costs[i];
         int slot = i;
         // insertion into the short sorted list
         for (int k = 0; k < count; ++k)

@@ -76,6 +76,19 @@ double angleDeg(const cv::Matx33d& R)
     return std::acos(std::max(-1.0, std::min(1.0, (cv::trace(R) - 1) / 2))) * 180 / CV_PI;
 }
 
+/** The same verification, row for row: pair, config, inliers, E and pose exactly equal. */
+void expectSameRecords(const Verification& a, const Verification& b)
+{
+    ASSERT_EQ(a.records.size(), b.records.size());
+    for (std::size_t i = 0; i < a.records.size(); ++i) {
+        EXPECT_EQ(a.records[i].pairId, b.records[i].pairId);
+        EXPECT_EQ(a.records[i].config, b.records[i].config);
+        EXPECT_TRUE(a.records[i].inlierMatches == b.records[i].inlierMatches);
+        EXPECT_EQ(cv::norm(a.records[i].E - b.records[i].E), 0.0);
+        EXPECT_EQ(cv::norm(a.records[i].qvec - b.records[i].qvec), 0.0);
+    }
+}
+
 } // namespace
 
 TEST(ColmapDatabase, ReadsWhatColmapWrote)
@@ -263,14 +276,7 @@ TEST(ColmapDatabase, SameRowsAtAnyThreadCount)
     two.chunkSize = 3; // several batch calls, each with its place in the list
     one.chunkSize = 3;
     const Verification a = verifyPairs(db, one), b = verifyPairs(db, two);
-    ASSERT_EQ(a.records.size(), b.records.size());
-    for (std::size_t i = 0; i < a.records.size(); ++i) {
-        EXPECT_EQ(a.records[i].pairId, b.records[i].pairId);
-        EXPECT_EQ(a.records[i].config, b.records[i].config);
-        EXPECT_TRUE(a.records[i].inlierMatches == b.records[i].inlierMatches);
-        EXPECT_EQ(cv::norm(a.records[i].E - b.records[i].E), 0.0);
-        EXPECT_EQ(cv::norm(a.records[i].qvec - b.records[i].qvec), 0.0);
-    }
+    expectSameRecords(a, b);
 }
 
 namespace {
@@ -397,13 +403,7 @@ TEST(ColmapDatabase, BothSchemaGenerationsVerifiedAndWrittenAlike)
     const Verification va = verifyPairs(a, VerificationOptions());
     const Verification vb = verifyPairs(b, VerificationOptions());
     ASSERT_EQ(va.records.size(), 10u);
-    ASSERT_EQ(vb.records.size(), va.records.size());
-    for (std::size_t i = 0; i < va.records.size(); ++i) {
-        EXPECT_EQ(va.records[i].pairId, vb.records[i].pairId);
-        EXPECT_EQ(va.records[i].config, vb.records[i].config);
-        EXPECT_TRUE(va.records[i].inlierMatches == vb.records[i].inlierMatches);
-        EXPECT_EQ(cv::norm(va.records[i].E - vb.records[i].E), 0.0);
-    }
+    expectSameRecords(va, vb);
     writeTwoViewGeometries(a, va.records);
     writeTwoViewGeometries(b, vb.records);
     // Equal rows in both (the added columns left NULL, as COLMAP 4.2's matcher leaves them),

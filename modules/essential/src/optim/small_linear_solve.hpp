@@ -13,20 +13,22 @@
 #include <Eigen/Core>
 
 #include <cmath>
+#include <limits>
 #include <utility>
 
 namespace cv {
 namespace essential {
 namespace optim {
 
-/** Solves A x = b by Gaussian elimination with partial pivoting (row exchanges by the largest
-magnitude in the column, as LAPACK's getrf). Returns false, leaving x unspecified, when a pivot is
-zero or not finite: A is singular to working precision or holds a NaN / infinity. A and b are taken
-by value: the elimination works in place on the copies. */
+/** LU factorisation with partial pivoting in place (row exchanges by the largest magnitude in the
+column, as LAPACK's getrf): on return A holds U on and above the diagonal and the multipliers
+below it, and row k was exchanged with row pivot[k] at step k; `sign` is the permutation's sign.
+Returns false at a column with no non-zero pivot (singular to working precision) or a pivot that
+is not finite; A is then only partly reduced. */
 template <int N>
-inline bool solvePartialPivot(Eigen::Matrix<double, N, N> A, Eigen::Matrix<double, N, 1> b,
-                              Eigen::Matrix<double, N, 1>& x)
+inline bool factorPartialPivot(Eigen::Matrix<double, N, N>& A, int pivot[N], double& sign)
 {
+    sign = 1.0;
     for (int k = 0; k < N; ++k) {
         int p = k;
         double largest = std::abs(A(k, k));
@@ -37,58 +39,61 @@ inline bool solvePartialPivot(Eigen::Matrix<double, N, N> A, Eigen::Matrix<doubl
                 p = i;
             }
         }
-        // Also false for a NaN column: every comparison with NaN fails, so largest stays NaN or 0.
+        // Also false for a NaN column (every comparison with NaN fails, so largest stays NaN or 0)
+        // and an infinite pivot, whose zero multipliers would hide it from the solution.
         if (!(largest > 0.0) || !std::isfinite(largest)) return false;
+        pivot[k] = p;
         if (p != k) {
             A.row(k).swap(A.row(p));
-            std::swap(b[k], b[p]);
+            sign = -sign;
         }
         const double inversePivot = 1.0 / A(k, k);
         for (int i = k + 1; i < N; ++i) {
             const double factor = A(i, k) * inversePivot;
+            A(i, k) = factor;
             for (int j = k + 1; j < N; ++j)
                 A(i, j) -= factor * A(k, j);
-            b[i] -= factor * b[k];
         }
     }
+    return true;
+}
+
+/** Solves A x = b by that factorisation. Returns false, leaving x unspecified, when A is singular
+to working precision or the solution is not finite (A or b held a NaN or an infinity, or A is so
+near singular that x overflows). A is taken by value: the factorisation works on the copy. */
+template <int N>
+inline bool solvePartialPivot(Eigen::Matrix<double, N, N> A, Eigen::Matrix<double, N, 1> b,
+                              Eigen::Matrix<double, N, 1>& x)
+{
+    int pivot[N];
+    double sign;
+    if (!factorPartialPivot<N>(A, pivot, sign)) return false;
+    // P b, then L y = P b (L's rows were exchanged with A's, as in LAPACK's getrs), then U x = y.
+    for (int k = 0; k < N; ++k)
+        std::swap(b[k], b[pivot[k]]);
+    for (int k = 0; k < N; ++k)
+        for (int i = k + 1; i < N; ++i)
+            b[i] -= A(i, k) * b[k];
     for (int i = N - 1; i >= 0; --i) {
         double sum = b[i];
         for (int j = i + 1; j < N; ++j)
             sum -= A(i, j) * x[j];
         x[i] = sum / A(i, i);
     }
-    return true;
+    return x.allFinite();
 }
 
-/** The determinant of A by the same elimination (the product of the pivots, its sign flipped by
-each row exchange); 0 when a column has no non-zero pivot, NaN when A holds a NaN. */
+/** The determinant of A by the same factorisation (the product of the pivots and the sign of the
+row exchanges): 0 when a column has no non-zero pivot, NaN when A is not finite. */
 template <int N> inline double determinantPartialPivot(Eigen::Matrix<double, N, N> A)
 {
-    double det = 1.0;
-    for (int k = 0; k < N; ++k) {
-        int p = k;
-        double largest = std::abs(A(k, k));
-        for (int i = k + 1; i < N; ++i) {
-            const double v = std::abs(A(i, k));
-            if (v > largest) {
-                largest = v;
-                p = i;
-            }
-        }
-        if (std::isnan(largest)) return largest;
-        if (largest == 0.0) return 0.0;
-        if (p != k) {
-            A.row(k).swap(A.row(p));
-            det = -det;
-        }
+    if (!A.allFinite()) return std::numeric_limits<double>::quiet_NaN();
+    int pivot[N];
+    double sign;
+    if (!factorPartialPivot<N>(A, pivot, sign)) return 0.0;
+    double det = sign;
+    for (int k = 0; k < N; ++k)
         det *= A(k, k);
-        const double inversePivot = 1.0 / A(k, k);
-        for (int i = k + 1; i < N; ++i) {
-            const double factor = A(i, k) * inversePivot;
-            for (int j = k + 1; j < N; ++j)
-                A(i, j) -= factor * A(k, j);
-        }
-    }
     return det;
 }
 

@@ -24,7 +24,7 @@ bool GaussNewtonSolver::converge(geometry::EssentialPose& pose, const Point2d* x
         previousCost = cost;
         geometry::Vector5d step;
         // Singular J: a degenerate sample or start.
-        if (!optim::solvePartialPivot<5>(J, -r, step) || !step.allFinite()) return false;
+        if (!optim::solvePartialPivot<5>(J, -r, step)) return false;
         pose.update(step);
     }
     return evaluateMinimalSet(pose, x1, x2, r, J) < settings_.convergedCost;

@@ -1,15 +1,18 @@
 // This file is part of opencv_essential, licensed under the Apache License, Version 2.0.
 // See the LICENSE file at the top of the source tree.
 
-// The fixed-size solves of the optimisers (optim/small_linear_solve.hpp) against Eigen's general
-// decompositions: the same solutions and determinants to round-off on well-conditioned systems,
-// and a refusal (false, or a zero determinant) where the system has no unique solution.
+// The fixed-size solves of the optimisers (optim/small_linear_solve.hpp) and the 3 x 3 smallest
+// eigenvector (optim/smallest_eigenvector.hpp) against Eigen's general decompositions: the same
+// solutions, determinants and eigenvectors to round-off on well-conditioned systems, and a refusal
+// (false, or a zero determinant) where the system has no unique solution.
 
 #include "optim/small_linear_solve.hpp"
+#include "optim/smallest_eigenvector.hpp"
 
 #include "essential_test.hpp"
 
 #include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
 #include <Eigen/LU>
 
 #include <limits>
@@ -126,4 +129,45 @@ TEST(SmallLinearSolve, CholeskyRefusesWhatIsNotPositiveDefinite)
     Matrix5d nan = Matrix5d::Identity();
     nan(4, 4) = std::numeric_limits<double>::quiet_NaN();
     EXPECT_FALSE(solveCholesky<5>(nan, randomVector(g), x));
+}
+
+TEST(SmallestEigenvector, AsEigensIterativeSolverOnPositiveSemiDefiniteMatrices)
+{
+    // Sums of five outer products c c^T, as the translation start builds them, and rank-2 ones
+    // (a zero eigenvalue): the eigenvector of the smallest eigenvalue agrees with Eigen's
+    // (iterative QL) solver up to sign, |v . v_eigen| >= 1 - 1e-10, wherever the two smallest
+    // eigenvalues are apart by more than 1e-6 of the largest; S v = lambda_min v to 1e-12 of it.
+    std::mt19937_64 g(6);
+    std::normal_distribution<double> n(0.0, 1.0);
+    int checked = 0;
+    for (int i = 0; i < 4000; ++i) {
+        Eigen::Matrix3d S = Eigen::Matrix3d::Zero();
+        const int terms = i % 4 == 0 ? 2 : 5;
+        const double shrink = i % 3 == 0 ? 1e-3 : 1.0; // small smallest eigenvalues too
+        for (int k = 0; k < terms; ++k) {
+            Eigen::Vector3d c(n(g), n(g), shrink * n(g));
+            S += c * c.transpose();
+        }
+        Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(S);
+        const Eigen::Vector3d lambda = eig.eigenvalues();
+        const Eigen::Vector3d v = cv::essential::optim::smallestEigenvector(S);
+        EXPECT_NEAR(v.norm(), 1.0, 1e-14);
+        EXPECT_LE((S * v - lambda[0] * v).norm(), 1e-12 * lambda[2]) << "matrix " << i;
+        if (lambda[1] - lambda[0] > 1e-6 * lambda[2]) {
+            EXPECT_GE(std::abs(v.dot(eig.eigenvectors().col(0))), 1.0 - 1e-10) << "matrix " << i;
+            ++checked;
+        }
+    }
+    EXPECT_GT(checked, 3900);
+}
+
+TEST(SmallestEigenvector, RankOneAndZeroMatrices)
+{
+    const Eigen::Vector3d c(1.0, 2.0, -0.5);
+    const Eigen::Vector3d v =
+        cv::essential::optim::smallestEigenvector(Eigen::Matrix3d(c * c.transpose()));
+    EXPECT_NEAR(v.norm(), 1.0, 1e-14);
+    EXPECT_LT(std::abs(v.dot(c)), 1e-14); // any unit vector orthogonal to c
+    const Eigen::Vector3d zero = cv::essential::optim::smallestEigenvector(Eigen::Matrix3d::Zero());
+    EXPECT_NEAR(zero.norm(), 1.0, 1e-14);
 }

@@ -9,8 +9,8 @@
 
 #include "geometry/essential_parameterisation.hpp"
 #include "optim/small_linear_solve.hpp"
+#include "optim/smallest_eigenvector.hpp"
 
-#include <Eigen/Eigenvalues>
 #include <opencv2/core.hpp>
 
 namespace cv {
@@ -37,11 +37,9 @@ inline geometry::EssentialPose bestTranslationStart(const Point2d* x1, const Poi
                                       .cross(Eigen::Vector3d(x2[i].x, x2[i].y, 1.0));
         S.noalias() += c * c.transpose();
     }
-    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig;
-    eig.computeDirect(S);
     geometry::EssentialPose pose;
     pose.R = R0;
-    pose.Rt = geometry::rotationWithFirstColumn(eig.eigenvectors().col(0));
+    pose.Rt = geometry::rotationWithFirstColumn(optim::smallestEigenvector(S));
     return pose;
 }
 

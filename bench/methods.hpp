@@ -123,6 +123,8 @@ inline void applyOursOption(const std::string& key, const std::string& value,
             fail(where + "budget is opencv or confidence", 2);
     } else if (key == "plane") {
         if (!parseBool(value, params.planeParallax)) fail(where + "plane is 0 or 1", 2);
+    } else if (key == "front") {
+        if (!parseBool(value, params.inFrontCheck)) fail(where + "front is 0 or 1", 2);
     } else if (key == "local") {
         if (!parseBool(value, params.budgetLocalSamples)) fail(where + "local is 0 or 1", 2);
     } else if (key == "refine") {
@@ -130,7 +132,7 @@ inline void applyOursOption(const std::string& key, const std::string& value,
     } else {
         fail("unknown ours option '" + key +
                  "' (known: solver, sampler, maxIters, lo, sprt, threshold, budgetMs, budget, "
-                 "plane, local, refine)",
+                 "plane, front, local, refine)",
              2);
     }
 }

@@ -117,6 +117,22 @@ double trueRatio(const Pair& p, double px)
     return double(good) / p.p1.size();
 }
 
+/** MSAC cost of the pose (R, t) on the pair's matches: the mean over the matches of the squared
+ * Sampson distance in pixels, truncated at the threshold. Tells a search that missed the true pose
+ * (the true pose costs less than the returned one) from an objective that prefers a wrong one. */
+double msacCostPx(const Pair& p, const cv::Matx33d& R, const cv::Vec3d& t, double px)
+{
+    if (p.p1.empty()) return 0;
+    const cv::Matx33d Kinv = p.K.inv();
+    const cv::Matx33d F = Kinv.t() * essential_test::skewMatrix(t) * R * Kinv;
+    double cost = 0;
+    for (size_t i = 0; i < p.p1.size(); ++i) {
+        const double d = essential_test::sampsonPx(F, p.p1[i], p.p2[i]);
+        cost += std::isfinite(d) ? std::min(d * d, px * px) : px * px;
+    }
+    return cost / double(p.p1.size());
+}
+
 essential_samples::FrontEndParams frontEnd(const Options& o)
 {
     essential_samples::FrontEndParams params;
@@ -480,7 +496,7 @@ int run(int argc, char** argv)
         csv.open(o.csv);
         if (!csv) fail("cannot write '" + o.csv + "'");
         csv << "set,pair,matches,true_ratio,true_rotation_deg,method,cpu_ms,inliers,posed,"
-               "r_err_deg,t_err_deg\n";
+               "r_err_deg,t_err_deg,cost_px2,true_cost_px2\n";
     }
     // group -> method -> runs; groups: "all", each set, each bucket of every set family.
     std::map<std::string, std::map<std::string, Cell>> cells;
@@ -524,10 +540,13 @@ int run(int argc, char** argv)
             for (const std::string& g : groups)
                 cells[g][m.label].runs.push_back(r);
             if (csv.is_open())
-                csv << cv::format("%s,%s,%zu,%.4f,%.2f,%s,%.3f,%d,%d,%.3f,%.3f\n", p.set.c_str(),
-                                  p.name.c_str(), p.p1.size(), p.trueRatio, p.rotationDeg,
-                                  m.label.c_str(), r.ms, out.inliers, r.posed ? 1 : 0, r.rErr,
-                                  r.tErr);
+                csv << cv::format("%s,%s,%zu,%.4f,%.2f,%s,%.3f,%d,%d,%.3f,%.3f,%.5f,%.5f\n",
+                                  p.set.c_str(), p.name.c_str(), p.p1.size(), p.trueRatio,
+                                  p.rotationDeg, m.label.c_str(), r.ms, out.inliers,
+                                  r.posed ? 1 : 0, r.rErr, r.tErr,
+                                  out.posed ? msacCostPx(p, out.R, out.t, o.threshold)
+                                            : o.threshold * o.threshold,
+                                  msacCostPx(p, p.R, p.t, o.threshold));
         }
         for (const Method& m : o.methods)
             line +=

@@ -30,6 +30,7 @@ class EssentialParams:
     sampleBudget: int
     budgetLocalSamples: bool
     planeParallax: bool
+    inFrontCheck: bool
     loIterations: int
     loSampleSize: int
     sampler: int
@@ -61,6 +62,8 @@ class EssentialReport:
     localOptimisationsKept: int
     sprtRejections: int
     planeParallaxKept: bool
+    inFrontSearch: bool
+    inFrontSearchKept: bool
     timeSetupMs: float
     timeSearchMs: float
     timeRefineMs: float

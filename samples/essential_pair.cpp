@@ -572,7 +572,9 @@ int run(int argc, char** argv)
                                {"hypotheses_converged", report.hypothesesConverged},
                                {"hypotheses_scored", report.hypothesesScored},
                                {"refine_iterations", report.refineIterations},
-                               {"plane_check_replaced", report.planeParallaxKept}};
+                               {"plane_check_replaced", report.planeParallaxKept},
+                               {"in_front_search", report.inFrontSearch},
+                               {"in_front_search_replaced", report.inFrontSearchKept}};
         if (found) ours["E"] = matrixJson(report.E);
         if (found && report.poseRecovered) {
             ours["R"] = matrixJson(report.R);
@@ -659,6 +661,10 @@ int run(int argc, char** argv)
                 methodName.c_str(), essential_samples::samplerName(estimator.sampler),
                 params.threshold, static_cast<unsigned long long>(params.seed));
     std::printf("%s\n%s\n", budgetNote.c_str(), planeNote.c_str());
+    if (report.inFrontSearch)
+        std::printf("in-front check: over 5%% of the winner's inliers lay behind the cameras; a "
+                    "second search scoring only inliers in front %s\n",
+                    report.inFrontSearchKept ? "found a better model, returned" : "kept the first");
     if (found) {
         std::printf("E =\n%s", formatMatrix(cv::Mat(report.E)).c_str());
         if (report.poseRecovered) {

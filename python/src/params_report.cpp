@@ -40,6 +40,7 @@ template <class F> void forEachParamField(F&& f)
     f("sampleBudget", &Params::sampleBudget);
     f("budgetLocalSamples", &Params::budgetLocalSamples);
     f("planeParallax", &Params::planeParallax);
+    f("inFrontCheck", &Params::inFrontCheck);
     f("loIterations", &Params::loIterations);
     f("loSampleSize", &Params::loSampleSize);
     f("sampler", &Params::sampler);
@@ -179,6 +180,8 @@ template <class F> void forEachReportNumber(F&& f)
     f("localOptimisationsKept", &Report::localOptimisationsKept);
     f("sprtRejections", &Report::sprtRejections);
     f("planeParallaxKept", &Report::planeParallaxKept);
+    f("inFrontSearch", &Report::inFrontSearch);
+    f("inFrontSearchKept", &Report::inFrontSearchKept);
     f("timeSetupMs", &Report::timeSetupMs);
     f("timeSearchMs", &Report::timeSearchMs);
     f("timeRefineMs", &Report::timeRefineMs);

@@ -61,6 +61,13 @@ struct SearchSettings
     (EssentialSolver::setThreshold, once per estimate); off for a second search of the same
     estimate. */
     bool setSolverThreshold = true;
+    /** Adaptive MSAC: score with scoreMsacInFront (ransac/in_front_score.hpp) instead of plain
+    MSAC, for a second search when the first one's winner has inliers behind the cameras. SPRT
+    (which counts plain inliers) is not used in such a search. */
+    bool scoreInFront = false;
+    /** Adaptive MSAC: at most this many samples whatever the caps above say (0: no limit); a
+    second search of the same estimate gets what the first left of the budget. */
+    int sampleLimit = 0;
 };
 
 struct SearchResult

@@ -2,6 +2,7 @@
 // See the LICENSE file at the top of the source tree.
 
 #include "ransac/candidate_pool.hpp"
+#include "ransac/in_front_score.hpp"
 #include "ransac/msac_score.hpp"
 #include "ransac/prosac_sampler.hpp"
 #include "ransac/sample_buffer.hpp"
@@ -78,7 +79,12 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
     if (n < buffer.sampleSize) return result;
     // The sample cap: from the solver's rate at any pose until there is a model, then from its
     // rate at the model's pose (EssentialSolver::hitProbabilityAt).
-    int cap = std::max(sampleCap(settings.maxIters, solver.successRate()), settings.minSampleCap);
+    // settings.sampleLimit, when set, bounds it whatever the rule.
+    auto limited = [&](int samples) {
+        return settings.sampleLimit > 0 ? std::min(samples, settings.sampleLimit) : samples;
+    };
+    int cap = limited(
+        std::max(sampleCap(settings.maxIters, solver.successRate()), settings.minSampleCap));
 
     // PROSAC: the samples follow the growth schedule with T_N = the confidence cap, so that the
     // pool covers every point by the time that cap is reached.
@@ -111,6 +117,12 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
         scoring = &shuffled;
     }
     Sprt sprt(kSprtHypothesisCost, kSprtInitialDelta);
+    // The score of every hypothesis and polished model: plain MSAC, or the in-front MSAC of a
+    // second search (SearchSettings::scoreInFront), with the same early exit at the bound.
+    auto score = [&](const Matx33d& E, double bound) {
+        return settings.scoreInFront ? scoreMsacInFront(E, *scoring, bound)
+                                     : scoreMsac(E, *scoring, bound);
+    };
     const bool lo = settings.loIterations > 0;
     std::vector<uchar> mask;
     std::vector<int> chosen;
@@ -153,7 +165,7 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
             result.hypothesesConverged += count;
             result.hypothesesScored += count;
             for (int h = 0; h < count; ++h) {
-                const Score s = scoreMsac(inner.solutions[h], *scoring, best.cost);
+                const Score s = score(inner.solutions[h], best.cost);
                 result.pointsScored += s.scored;
                 if (s.cost < best.cost && s.inliers >= buffer.sampleSize) {
                     best = s;
@@ -165,7 +177,7 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
 
     // IRLS from `start` on its inliers (within loBand thresholds; a random subset of
     // loSampleSize of them when set), scored on all points: the local optimisation of a model.
-    auto polishFrom = [&](const Matx33d& start, Matx33d& polished, Score& score) {
+    auto polishFrom = [&](const Matx33d& start, Matx33d& polished, Score& out) {
         inlierMask(start, problem, settings.loBand * problem.threshold, mask.data());
         chosen.clear();
         for (int i = 0; i < n; ++i)
@@ -190,8 +202,8 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
         const refine::IrlsResult refined =
             refine::refineIrls(subset, start, settings.loScale, irls);
         if (!refined.improved) return false;
-        score = scoreMsac(refined.E, *scoring, best.cost);
-        result.pointsScored += score.scored;
+        out = score(refined.E, best.cost);
+        result.pointsScored += out.scored;
         polished = refined.E;
         return true;
     };
@@ -259,8 +271,8 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
                         std::min(need, rule(std::min(settings.confidence, kExtendedConfidence))));
     };
     auto samplesNeeded = [&]() {
-        cap = std::max(sampleCap(settings.maxIters, solver.hitProbabilityAt(1.0, result.E)),
-                       settings.minSampleCap);
+        cap = limited(std::max(sampleCap(settings.maxIters, solver.hitProbabilityAt(1.0, result.E)),
+                               settings.minSampleCap));
         int need = stopRule(double(best.inliers) / n);
         if (!prosac || prosac->isUniform()) return need;
         inlierMask(result.E, problem, problem.threshold, mask.data());
@@ -323,7 +335,7 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
                     continue;
                 }
             } else {
-                s = scoreMsac(buffer.solutions[h], *scoring, bound);
+                s = score(buffer.solutions[h], bound);
                 result.pointsScored += s.scored;
             }
             if (lo && s.cost < bound && s.inliers >= buffer.sampleSize)

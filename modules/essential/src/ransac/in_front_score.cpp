@@ -1,0 +1,113 @@
+// This file is part of opencv_essential, licensed under the Apache License, Version 2.0.
+// See the LICENSE file at the top of the source tree.
+
+#include "ransac/in_front_score.hpp"
+
+#include "geometry/sampson.hpp"
+#include "geometry/symmetric_epipolar.hpp"
+#include "pose/pose_recovery.hpp"
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <array>
+
+namespace cv {
+namespace essential {
+namespace ransac {
+
+namespace {
+
+/** A point whose two rays, brought into one frame, are this many thresholds or less from parallel
+has a depth sign that noise decides (a distant point, or one near the epipole): it counts as in
+front under every pose rather than as evidence against one. The inlier threshold bounds the angle
+noise moves a ray by (in normalised units, about radians); twice that is where the sign of the
+triangulated depth stops being set by the noise. */
+constexpr double kUndecidedParallax = 2.0;
+
+/** Counts and costs of the inliers in front under each of the four poses, in the order
+(R1, t), (R1, -t), (R2, t), (R2, -t). */
+struct FourPoses
+{
+    std::array<int, 4> count{};
+    std::array<double, 4> cost{};
+};
+
+/** For every inlier (squared distance at most t2): its distance added to the poses that place it in
+front of both cameras. The depth signs of X2 = R X1 + s t follow from z2 b = z1 a + s t with
+a = R x1, b = x2, c = a x b: z1 has the sign of s (b x t).c, z2 that of s (a x t).c. */
+FourPoses inFrontOfFourPoses(const Matx33d& E, const Problem& problem, double t2, bool& ok)
+{
+    FourPoses out;
+    Eigen::Matrix3d R[2];
+    Eigen::Vector3d t;
+    ok = pose::poseCandidates(E, R[0], R[1], t);
+    if (!ok) return out;
+    const geometry::EssentialEntries e(E);
+    const bool symmetric = problem.distance == DISTANCE_SYMMETRIC_EPIPOLAR;
+    const double undecided2 = kUndecidedParallax * kUndecidedParallax * t2;
+    const int n = problem.size();
+    for (int i = 0; i < n; ++i) {
+        const double x1 = problem.x1[i], y1 = problem.y1[i], x2 = problem.x2[i], y2 = problem.y2[i];
+        const double d2 = symmetric ? geometry::symmetricEpipolarSquared(e, x1, y1, x2, y2)
+                                    : geometry::sampsonSquared(e, x1, y1, x2, y2);
+        if (!(d2 <= t2)) continue;
+        const Eigen::Vector3d q1(x1, y1, 1.0), b(x2, y2, 1.0);
+        const Eigen::Vector3d bt = b.cross(t);
+        for (int r = 0; r < 2; ++r) {
+            const Eigen::Vector3d a = R[r] * q1;
+            const Eigen::Vector3d c = a.cross(b);
+            bool plus = true, minus = true;
+            if (c.squaredNorm() > undecided2 * a.squaredNorm() * b.squaredNorm()) {
+                const double s1 = bt.dot(c), s2 = a.cross(t).dot(c);
+                plus = s1 > 0.0 && s2 > 0.0;
+                minus = s1 < 0.0 && s2 < 0.0;
+            }
+            if (plus) {
+                ++out.count[2 * r];
+                out.cost[2 * r] += d2;
+            }
+            if (minus) {
+                ++out.count[2 * r + 1];
+                out.cost[2 * r + 1] += d2;
+            }
+        }
+    }
+    return out;
+}
+
+} // namespace
+
+Score scoreMsacInFront(const Matx33d& E, const Problem& problem, double bestCost)
+{
+    const Score plain = scoreMsac(E, problem, bestCost);
+    if (plain.cost >= bestCost) return plain; // the in-front cost is never lower
+    const int n = problem.size();
+    const double t2 = problem.threshold * problem.threshold;
+    bool ok = false;
+    const FourPoses poses = inFrontOfFourPoses(E, problem, t2, ok);
+    Score s;
+    s.scored = n;
+    s.cost = n * t2;
+    if (!ok) return s;
+    for (int k = 0; k < 4; ++k) {
+        const double cost = poses.cost[k] + (n - poses.count[k]) * t2;
+        if (cost < s.cost) {
+            s.cost = cost;
+            s.inliers = poses.count[k];
+        }
+    }
+    return s;
+}
+
+int inliersInFront(const Matx33d& E, const Problem& problem, double threshold)
+{
+    bool ok = false;
+    const FourPoses poses = inFrontOfFourPoses(E, problem, threshold * threshold, ok);
+    return ok ? *std::max_element(poses.count.begin(), poses.count.end()) : 0;
+}
+
+} // namespace ransac
+} // namespace essential
+} // namespace cv

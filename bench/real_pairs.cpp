@@ -106,11 +106,17 @@ struct Options
     std::string commandLine;
 };
 
+/** The pixel fundamental matrix of the pose (R, t) with the pair's camera. */
+cv::Matx33d fundamentalPx(const Pair& p, const cv::Matx33d& R, const cv::Vec3d& t)
+{
+    const cv::Matx33d Kinv = p.K.inv();
+    return Kinv.t() * essential_test::skewMatrix(t) * R * Kinv;
+}
+
 double trueRatio(const Pair& p, double px)
 {
     if (p.p1.empty()) return 0;
-    const cv::Matx33d Kinv = p.K.inv();
-    const cv::Matx33d F = Kinv.t() * essential_test::skewMatrix(p.t) * p.R * Kinv;
+    const cv::Matx33d F = fundamentalPx(p, p.R, p.t);
     int good = 0;
     for (size_t i = 0; i < p.p1.size(); ++i)
         good += essential_test::sampsonPx(F, p.p1[i], p.p2[i]) < px;
@@ -123,8 +129,7 @@ double trueRatio(const Pair& p, double px)
 double msacCostPx(const Pair& p, const cv::Matx33d& R, const cv::Vec3d& t, double px)
 {
     if (p.p1.empty()) return 0;
-    const cv::Matx33d Kinv = p.K.inv();
-    const cv::Matx33d F = Kinv.t() * essential_test::skewMatrix(t) * R * Kinv;
+    const cv::Matx33d F = fundamentalPx(p, R, t);
     double cost = 0;
     for (size_t i = 0; i < p.p1.size(); ++i) {
         const double d = essential_test::sampsonPx(F, p.p1[i], p.p2[i]);
@@ -522,6 +527,7 @@ int run(int argc, char** argv)
         std::string line =
             cv::format("real_pairs: %zu/%zu %s (%zu matches, true %.2f, rot %.0f):", pi + 1,
                        pairs.size(), p.name.c_str(), p.p1.size(), p.trueRatio, p.rotationDeg);
+        const double trueCost = csv.is_open() ? msacCostPx(p, p.R, p.t, o.threshold) : 0.0;
         for (size_t mi : methodOrder) {
             const Method& m = o.methods[mi];
             essential_bench::RunOptions ro;
@@ -546,7 +552,7 @@ int run(int argc, char** argv)
                                   r.posed ? 1 : 0, r.rErr, r.tErr,
                                   out.posed ? msacCostPx(p, out.R, out.t, o.threshold)
                                             : o.threshold * o.threshold,
-                                  msacCostPx(p, p.R, p.t, o.threshold));
+                                  trueCost);
         }
         for (const Method& m : o.methods)
             line +=

@@ -321,14 +321,16 @@ Mat estimate(const Problem& problem, const EssentialParams& params, OutputArray 
             const ransac::SearchResult second =
                 ransac::searchMsac(problem, *solver, rng, inFrontSettings);
             rep.inFrontSearch = true;
-            if (second.found &&
-                ransac::scoreMsacInFront(second.E, problem).cost <
-                    ransac::scoreMsacInFront(found.E, problem).cost &&
-                ransac::scoreMsac(second.E, problem).cost <=
-                    kInFrontMaxPlainCostRatio * ransac::scoreMsac(found.E, problem).cost) {
-                found.E = second.E;
-                found.inliers = ransac::scoreMsac(second.E, problem).inliers;
-                rep.inFrontSearchKept = true;
+            if (second.found) {
+                const ransac::Score secondPlain = ransac::scoreMsac(second.E, problem);
+                if (ransac::scoreMsacInFront(second.E, problem).cost <
+                        ransac::scoreMsacInFront(found.E, problem).cost &&
+                    secondPlain.cost <=
+                        kInFrontMaxPlainCostRatio * ransac::scoreMsac(found.E, problem).cost) {
+                    found.E = second.E;
+                    found.inliers = secondPlain.inliers;
+                    rep.inFrontSearchKept = true;
+                }
             }
             found.iterations += second.iterations;
             found.hypothesesGenerated += second.hypothesesGenerated;

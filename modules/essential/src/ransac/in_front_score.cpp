@@ -3,12 +3,12 @@
 
 #include "ransac/in_front_score.hpp"
 
+#include "geometry/depth_signs.hpp"
 #include "geometry/sampson.hpp"
 #include "geometry/symmetric_epipolar.hpp"
 #include "pose/pose_recovery.hpp"
 
 #include <Eigen/Core>
-#include <Eigen/Geometry>
 
 #include <algorithm>
 #include <array>
@@ -19,11 +19,11 @@ namespace ransac {
 
 namespace {
 
-/** A point whose two rays, brought into one frame, are this many thresholds or less from parallel
-has a depth sign that noise decides (a distant point, or one near the epipole): it counts as in
-front under every pose rather than as evidence against one. The inlier threshold bounds the angle
-noise moves a ray by (in normalised units, about radians); twice that is where the sign of the
-triangulated depth stops being set by the noise. */
+/** The parallax (geometry::scaledDepths) below which a point's depth signs do not decide, in
+inlier thresholds: such a point (a distant one, or one near the epipole) counts as in front under
+every pose rather than as evidence against one. The inlier threshold bounds the angle noise moves a
+ray by (in normalised units, about radians); twice that is where the sign of the triangulated depth
+stops being set by the noise. */
 constexpr double kUndecidedParallax = 2.0;
 
 /** Counts and costs of the inliers in front under each of the four poses, in the order
@@ -34,10 +34,9 @@ struct FourPoses
     std::array<double, 4> cost{};
 };
 
-/** For every inlier (squared distance at most t2): its distance added to the poses that place it in
-front of both cameras. The depth signs of X2 = R X1 + s t follow from z2 b = z1 a + s t with
-a = R x1, b = x2, c = a x b: z1 has the sign of s (b x t).c, z2 that of s (a x t).c. */
-FourPoses inFrontOfFourPoses(const Matx33d& E, const Problem& problem, double t2, bool& ok)
+/** For every inlier (distance at most threshold): its squared distance added to the poses that
+place it in front of both cameras (geometry::scaledDepths; -t flips both depth signs). */
+FourPoses inFrontOfFourPoses(const Matx33d& E, const Problem& problem, double threshold, bool& ok)
 {
     FourPoses out;
     Eigen::Matrix3d R[2];
@@ -46,23 +45,21 @@ FourPoses inFrontOfFourPoses(const Matx33d& E, const Problem& problem, double t2
     if (!ok) return out;
     const geometry::EssentialEntries e(E);
     const bool symmetric = problem.distance == DISTANCE_SYMMETRIC_EPIPOLAR;
-    const double undecided2 = kUndecidedParallax * kUndecidedParallax * t2;
+    const double t2 = threshold * threshold;
+    const double minParallax = kUndecidedParallax * threshold;
     const int n = problem.size();
     for (int i = 0; i < n; ++i) {
         const double x1 = problem.x1[i], y1 = problem.y1[i], x2 = problem.x2[i], y2 = problem.y2[i];
         const double d2 = symmetric ? geometry::symmetricEpipolarSquared(e, x1, y1, x2, y2)
                                     : geometry::sampsonSquared(e, x1, y1, x2, y2);
         if (!(d2 <= t2)) continue;
-        const Eigen::Vector3d q1(x1, y1, 1.0), b(x2, y2, 1.0);
-        const Eigen::Vector3d bt = b.cross(t);
+        const Eigen::Vector3d q1(x1, y1, 1.0), q2(x2, y2, 1.0);
         for (int r = 0; r < 2; ++r) {
-            const Eigen::Vector3d a = R[r] * q1;
-            const Eigen::Vector3d c = a.cross(b);
+            double depth1, depth2;
             bool plus = true, minus = true;
-            if (c.squaredNorm() > undecided2 * a.squaredNorm() * b.squaredNorm()) {
-                const double s1 = bt.dot(c), s2 = a.cross(t).dot(c);
-                plus = s1 > 0.0 && s2 > 0.0;
-                minus = s1 < 0.0 && s2 < 0.0;
+            if (geometry::scaledDepths(R[r] * q1, q2, t, minParallax, depth1, depth2)) {
+                plus = depth1 > 0.0 && depth2 > 0.0;
+                minus = depth1 < 0.0 && depth2 < 0.0;
             }
             if (plus) {
                 ++out.count[2 * r];
@@ -86,7 +83,7 @@ Score scoreMsacInFront(const Matx33d& E, const Problem& problem, double bestCost
     const int n = problem.size();
     const double t2 = problem.threshold * problem.threshold;
     bool ok = false;
-    const FourPoses poses = inFrontOfFourPoses(E, problem, t2, ok);
+    const FourPoses poses = inFrontOfFourPoses(E, problem, problem.threshold, ok);
     Score s;
     s.scored = n;
     s.cost = n * t2;
@@ -104,7 +101,7 @@ Score scoreMsacInFront(const Matx33d& E, const Problem& problem, double bestCost
 int inliersInFront(const Matx33d& E, const Problem& problem, double threshold)
 {
     bool ok = false;
-    const FourPoses poses = inFrontOfFourPoses(E, problem, threshold * threshold, ok);
+    const FourPoses poses = inFrontOfFourPoses(E, problem, threshold, ok);
     return ok ? *std::max_element(poses.count.begin(), poses.count.end()) : 0;
 }
 

@@ -8,6 +8,7 @@
 #ifndef OPENCV_ESSENTIAL_SOLVERS_SAMPLE_CHEIRALITY_HPP
 #define OPENCV_ESSENTIAL_SOLVERS_SAMPLE_CHEIRALITY_HPP
 
+#include "geometry/depth_signs.hpp"
 #include "geometry/essential_parameterisation.hpp"
 
 #include <opencv2/core.hpp>
@@ -35,14 +36,8 @@ inline void depthSigns(const Eigen::Matrix3d& R, const Eigen::Vector3d& t, const
     for (int i = 0; i < n && (front || back); ++i) {
         const Eigen::Vector3d a = R * Eigen::Vector3d(x1[i].x, x1[i].y, 1.0);
         const Eigen::Vector3d q2(x2[i].x, x2[i].y, 1.0);
-        const Eigen::Vector3d c = q2.cross(a);
-        const double c2 = c.squaredNorm();
-        if (c2 <=
-            kMinCheiralityParallax * kMinCheiralityParallax * a.squaredNorm() * q2.squaredNorm())
-            continue;
-        // lambda2 q2 = lambda1 a + t: lambda1 = -(q2 x t).c / |c|^2, lambda2 = -(a x t).c / |c|^2.
-        const double depth1 = -q2.cross(t).dot(c);
-        const double depth2 = -a.cross(t).dot(c);
+        double depth1, depth2;
+        if (!geometry::scaledDepths(a, q2, t, kMinCheiralityParallax, depth1, depth2)) continue;
         front &= depth1 > 0.0 && depth2 > 0.0;
         back &= depth1 < 0.0 && depth2 < 0.0;
     }

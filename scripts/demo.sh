@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Builds the Release tree (see build.sh) and runs essential_pair on the bundled Leuven pair:
-# prints the matches, E, R, t, the inliers and the time of each stage, next to OpenCV's
+# Builds the library and essential_pair only (BUILD_SET=demo, see build.sh; the tests, benches and
+# the rest are scripts/test.sh's) and runs it on the bundled Leuven pair: prints the matches, E, R, t, the inliers and the time of each stage, next to OpenCV's
 # findEssentialMat + recoverPose on the same matches. Extra arguments go to essential_pair,
 # e.g. scripts/demo.sh --solver lm --threshold-px 0.5
 # Licensed under the Apache License, Version 2.0.
@@ -8,7 +8,7 @@ set -euo pipefail
 
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
-scripts/build.sh
+BUILD_SET=demo scripts/build.sh
 
 build_dir=${BUILD_DIR:-build}
 echo

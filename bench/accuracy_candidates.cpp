@@ -18,12 +18,12 @@
 #include "pose_accuracy.hpp"
 
 #include "geometry/essential_decomposition.hpp"
+#include "input/problem.hpp"
 #include "pose/pose_recovery.hpp"
-#include "problem.hpp"
-#include "ransac/msac_score.hpp"
-#include "ransac/search.hpp"
 #include "refine/final_refinement.hpp"
 #include "refine/irls_refinement.hpp"
+#include "scoring/msac_score.hpp"
+#include "search/search.hpp"
 
 #include <opencv2/essential.hpp>
 
@@ -401,9 +401,9 @@ int main(int argc, char** argv)
             ce::ransac::SearchSettings settings;
             settings.confidence = params.confidence;
             settings.maxIters = args.maxIters;
-            settings.loIterations = args.lo;
-            settings.loScale = args.loScale * problem.threshold;
-            settings.loBand = args.loBand;
+            settings.lo.iterations = args.lo;
+            settings.lo.scale = args.loScale * problem.threshold;
+            settings.lo.band = args.loBand;
             settings.sprt = params.sprt;
             const double s0 = threadCpuMs();
             const ce::ransac::SearchResult found =

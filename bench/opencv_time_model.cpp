@@ -2,7 +2,7 @@
 // See the LICENSE file at the top of the source tree.
 
 // The cost model behind EssentialParams::sampleBudget = BUDGET_OPENCV_TIME
-// (src/ransac/opencv_time_budget.hpp): thread CPU time of cv::findEssentialMat (RANSAC, 1000
+// (src/termination/opencv_time_budget.hpp): thread CPU time of cv::findEssentialMat (RANSAC, 1000
 // iterations) and of the module's default with the confidence cap, on data with 3% inliers, where
 // both run to their caps, for a range of N. Prints time per OpenCV iteration and per module sample.
 //

@@ -1,18 +1,18 @@
 // This file is part of opencv_essential, licensed under the Apache License, Version 2.0.
 // See the LICENSE file at the top of the source tree.
 
-// The plane-and-parallax check on its own (src/ransac/plane_parallax.hpp): dominant-plane scenes
-// (test/hard_scenes.hpp), the winner of a search without the check (the module's own overload with
-// planeParallax and refine off), then the check; counts the winners it turns right ("fix"), wrong
-// ("harm") or leaves as they were. The numbers behind kSignificance and kMemberBand.
+// The plane-and-parallax check on its own (src/degeneracy/plane_parallax.hpp): dominant-plane
+// scenes (test/hard_scenes.hpp), the winner of a search without the check (the module's own
+// overload with planeParallax and refine off), then the check; counts the winners it turns right
+// ("fix"), wrong ("harm") or leaves as they were. The numbers behind kSignificance and kMemberBand.
 //
 //   essential_plane_check [--problems 30] [--ratios 0.10,0.15,0.25] [--plane-fraction 0.8]
 
 #include "bench_common.hpp"
+#include "degeneracy/plane_parallax.hpp"
 #include "hard_scenes.hpp"
-#include "problem.hpp"
-#include "ransac/msac_score.hpp"
-#include "ransac/plane_parallax.hpp"
+#include "input/problem.hpp"
+#include "scoring/msac_score.hpp"
 
 #include <opencv2/essential.hpp>
 

@@ -4,7 +4,7 @@
 # The loop is exported by libopencv_calib3d 4.x and libopencv_geometry 5.x (cv::createRANSACPointSetRegistrator,
 # cv::createLMeDSPointSetRegistrator), but its interface, cv::PointSetRegistrator and its
 # Callback, is declared only in OpenCV's private calib3d/src/precomp.hpp. The module declares it
-# again itself (modules/essential/src/ransac/opencv_point_set_registrator.hpp, an ABI copy of
+# again itself (modules/essential/src/opencv_loop/opencv_point_set_registrator.hpp, an ABI copy of
 # OpenCV 4.6's). A copy of a private class may not match another OpenCV build, so this probe
 # compiles and runs, at configure time, a small program against that exact declaration and the
 # OpenCV found by find_package: it creates both loops with a trivial kernel (a 2D translation
@@ -22,7 +22,7 @@ option(ESSENTIAL_WITH_OPENCV_LOOP
 
 set(_essential_probe_source [=[
 // Configure-time probe of OpenCV's exported RANSAC / LMedS loops (cmake/ProbeOpenCvLoop.cmake).
-#include "ransac/opencv_point_set_registrator.hpp"
+#include "opencv_loop/opencv_point_set_registrator.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -150,7 +150,7 @@ function(essential_probe_opencv_loop result_var)
   # class, and only running it against the OpenCV at hand says whether it matches.
 
   # Re-probe when OpenCV, the compiler, the declaration or the probe itself change.
-  file(SHA256 ${PROJECT_SOURCE_DIR}/modules/essential/src/ransac/opencv_point_set_registrator.hpp
+  file(SHA256 ${PROJECT_SOURCE_DIR}/modules/essential/src/opencv_loop/opencv_point_set_registrator.hpp
        declaration_hash)
   string(SHA256 probe_hash "${_essential_probe_source}")
   set(key "${OpenCV_VERSION};${OpenCV_DIR};${CMAKE_CXX_COMPILER};${declaration_hash};${probe_hash}")

@@ -9,10 +9,10 @@
 //   essential_perf --benchmark_filter='Solver|Score|Mask|Refine|RecoverPose|Stages'
 //                  --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 
-#include "problem.hpp"
-#include "ransac/msac_score.hpp"
-#include "ransac/sprt.hpp"
+#include "input/problem.hpp"
 #include "refine/irls_refinement.hpp"
+#include "scoring/msac_score.hpp"
+#include "scoring/sprt.hpp"
 #include "synthetic_scene.hpp"
 
 #include <opencv2/calib3d.hpp>

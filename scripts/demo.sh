@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Builds the library and essential_pair only (BUILD_SET=demo, see build.sh; the tests, benches and
-# the rest are scripts/test.sh's) and runs it on the bundled Leuven pair: prints the matches, E, R, t, the inliers and the time of each stage, next to OpenCV's
-# findEssentialMat + recoverPose on the same matches. Extra arguments go to essential_pair,
+# the rest are scripts/test.sh's) and runs it on the bundled Leuven pair: prints the matches, E, R,
+# t, the inliers and the time of each stage, next to OpenCV's findEssentialMat + recoverPose on the
+# same matches. Extra arguments go to essential_pair,
 # e.g. scripts/demo.sh --solver lm --threshold-px 0.5
 # Licensed under the Apache License, Version 2.0.
 set -euo pipefail

@@ -8,7 +8,7 @@
 #ifndef OPENCV_ESSENTIAL_TEST_REFINEMENT_FIXTURES_HPP
 #define OPENCV_ESSENTIAL_TEST_REFINEMENT_FIXTURES_HPP
 
-#include "problem.hpp"
+#include "input/problem.hpp"
 #include "synthetic_scene.hpp"
 
 #include <cmath>

@@ -5,7 +5,7 @@
 // out the outliers' pull, it converges from perturbed starts, and on noise-free data the pose the
 // drop-in pair returns is exact.
 
-#include "problem.hpp"
+#include "input/problem.hpp"
 #include "refine/final_refinement.hpp"
 #include "refinement_fixtures.hpp"
 #include "synthetic_scene.hpp"

@@ -5,14 +5,14 @@
 // samples (NAPSAC), the plane-and-parallax check of the search's winner, and the sample budget of
 // OpenCV's time. docs/HARD_PAIRS.md measures what each buys on the hard sets.
 
+#include "degeneracy/plane_parallax.hpp"
 #include "hard_scenes.hpp"
-#include "problem.hpp"
-#include "ransac/msac_score.hpp"
-#include "ransac/napsac_sampler.hpp"
-#include "ransac/opencv_time_budget.hpp"
-#include "ransac/plane_parallax.hpp"
-#include "ransac/termination.hpp"
+#include "input/problem.hpp"
+#include "sampling/napsac_sampler.hpp"
+#include "scoring/msac_score.hpp"
 #include "synthetic_scene.hpp"
+#include "termination/opencv_time_budget.hpp"
+#include "termination/termination.hpp"
 
 #include <opencv2/calib3d.hpp>
 #include <opencv2/essential.hpp>

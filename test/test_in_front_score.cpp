@@ -1,13 +1,13 @@
 // This file is part of opencv_essential, licensed under the Apache License, Version 2.0.
 // See the LICENSE file at the top of the source tree.
 
-// The in-front MSAC score (ransac/in_front_score) and the in-front check of the pipeline
+// The in-front MSAC score (scoring/in_front_score) and the in-front check of the pipeline
 // (EssentialParams::inFrontCheck): inliers behind a camera cost as outliers, the score is never
 // below the plain one, and data that really hold points behind the cameras keep the true model.
 
-#include "problem.hpp"
-#include "ransac/in_front_score.hpp"
-#include "ransac/msac_score.hpp"
+#include "input/problem.hpp"
+#include "scoring/in_front_score.hpp"
+#include "scoring/msac_score.hpp"
 
 #include <opencv2/essential.hpp>
 

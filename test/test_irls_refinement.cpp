@@ -7,7 +7,7 @@
 // take out most (not all) of the outliers' pull, which is why the final refinement no longer runs
 // it on all points, Tukey's biweight takes out all of it, and it stops near its own fixed point.
 
-#include "problem.hpp"
+#include "input/problem.hpp"
 #include "refine/irls_refinement.hpp"
 #include "refinement_fixtures.hpp"
 #include "synthetic_scene.hpp"

@@ -6,9 +6,9 @@
 // normalised units, as cv::findEssentialMat's LMedS (OpenCV 4.6, calib3d/src/ptsetreg.cpp); and
 // no division by zero when the number of points equals the solver's sample size.
 
-#include "problem.hpp"
-#include "ransac/msac_score.hpp"
-#include "ransac/search.hpp"
+#include "input/problem.hpp"
+#include "scoring/msac_score.hpp"
+#include "search/search.hpp"
 #include "synthetic_scene.hpp"
 
 #include <opencv2/essential.hpp>

@@ -5,8 +5,8 @@
 // function itself, and the search following it (the points it scores are exactly what the
 // schedule implies).
 
-#include "problem.hpp"
-#include "ransac/search.hpp"
+#include "input/problem.hpp"
+#include "search/search.hpp"
 #include "synthetic_scene.hpp"
 
 #include <opencv2/essential.hpp>

@@ -2,10 +2,10 @@
 // See the LICENSE file at the top of the source tree.
 
 // The search's two guards against wrong basins on real pairs: the cheirality check of a
-// hypothesis on its own sample (ransac/sample_cheirality), and the pool of distinct runners-up
-// polished at the end of the search (ransac/candidate_pool).
+// hypothesis on its own sample (solvers/sample_cheirality), and the pool of distinct runners-up
+// polished at the end of the search (local_optimisation/candidate_pool).
 
-#include "ransac/candidate_pool.hpp"
+#include "local_optimisation/candidate_pool.hpp"
 #include "solvers/sample_cheirality.hpp"
 
 #include "essential_test.hpp"

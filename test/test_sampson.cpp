@@ -8,8 +8,8 @@
 #include "geometry/sampson.hpp"
 #include "geometry/so3.hpp"
 #include "geometry/symmetric_epipolar.hpp"
-#include "problem.hpp"
-#include "ransac/msac_score.hpp"
+#include "input/problem.hpp"
+#include "scoring/msac_score.hpp"
 
 #include "essential_test.hpp"
 

@@ -6,8 +6,8 @@
 // never passes, instead of overflowing the conversion to the clock's 64-bit count (undefined
 // behaviour, which UBSan reports); NaN and negative budgets raise.
 
-#include "ransac/deadline.hpp"
 #include "synthetic_scene.hpp"
+#include "termination/deadline.hpp"
 
 #include <opencv2/essential.hpp>
 

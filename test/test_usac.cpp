@@ -4,7 +4,7 @@
 // OpenCV's USAC options: local optimisation, PROSAC, SPRT, the USAC method flags and every field of
 // UsacParams do what essential.hpp says.
 
-#include "ransac/prosac_sampler.hpp"
+#include "sampling/prosac_sampler.hpp"
 #include "synthetic_scene.hpp"
 
 #include <opencv2/essential.hpp>
@@ -257,7 +257,7 @@ TEST(Prosac, SortedDataNeedsFarFewerSamplesThanUniform)
         EXPECT_LT(prosac.iterations * 10, uniform.iterations)
             << prosac.iterations << " vs " << uniform.iterations;
         // As complete a model as uniform sampling's, judged against the truth: uniform sampling's
-        // own inlier count is no reference since LO's inner samples (ransac/search_msac.cpp) made
+        // own inlier count is no reference since LO's inner samples (search/search_msac.cpp) made
         // it find the full model at this ratio (seed 2: 149 of 150, PROSAC 142 after 39 samples).
         // The reference is the true E's own inlier count: the noise puts 3% to 11% of the correct
         // matches beyond the threshold (134 / 146 / 140 of 150 for seeds 1 / 2 / 3; uniform

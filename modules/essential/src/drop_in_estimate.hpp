@@ -7,8 +7,8 @@
 #ifndef OPENCV_ESSENTIAL_DROP_IN_ESTIMATE_HPP
 #define OPENCV_ESSENTIAL_DROP_IN_ESTIMATE_HPP
 
-#include "mask_output.hpp"
-#include "point_layouts.hpp"
+#include "input/mask_output.hpp"
+#include "input/point_layouts.hpp"
 
 #include "opencv2/essential/params.hpp"
 

@@ -8,22 +8,22 @@
 
 #include "opencv2/essential.hpp"
 
+#include "degeneracy/degeneracy.hpp"
+#include "degeneracy/plane_parallax.hpp"
+#include "degeneracy/support_test.hpp"
 #include "drop_in_estimate.hpp"
-#include "geometry/degeneracy.hpp"
 #include "geometry/essential_decomposition.hpp"
-#include "mask_output.hpp"
-#include "point_layouts.hpp"
+#include "input/mask_output.hpp"
+#include "input/point_layouts.hpp"
+#include "input/problem.hpp"
 #include "pose/pose_recovery.hpp"
-#include "problem.hpp"
-#include "ransac/in_front_score.hpp"
-#include "ransac/msac_score.hpp"
-#include "ransac/opencv_time_budget.hpp"
-#include "ransac/plane_parallax.hpp"
-#include "ransac/sample_buffer.hpp"
-#include "ransac/search.hpp"
-#include "ransac/support_test.hpp"
-#include "ransac/termination.hpp"
 #include "refine/final_refinement.hpp"
+#include "sampling/sample_buffer.hpp"
+#include "scoring/in_front_score.hpp"
+#include "scoring/msac_score.hpp"
+#include "search/search.hpp"
+#include "termination/opencv_time_budget.hpp"
+#include "termination/termination.hpp"
 
 #include <opencv2/calib3d.hpp>
 
@@ -164,7 +164,7 @@ of 0.05 gives at most 0.11 and 0.31, and 120 problems of the synthetic protocol 
 0.093. */
 constexpr double kDegenerateFraction = 0.9;
 
-/** The search runs again with the in-front score (ransac/in_front_score.hpp) when more than this
+/** The search runs again with the in-front score (scoring/in_front_score.hpp) when more than this
 fraction of the winner's inliers lies behind the cameras under its best pose. Measured on the SIFT
 real pairs of docs/REAL_PAIRS.md (869 pairs, essential_real_pairs --front-end sift): of the 763
 winners within 10 degrees of the true pose, none had more than 8% of its inliers behind and 10 more
@@ -259,10 +259,10 @@ Mat estimate(const Problem& problem, const EssentialParams& params, OutputArray 
     settings.maxIters = params.maxIterations;
     settings.preemptiveHypotheses = params.preemptiveHypotheses;
     settings.preemptiveBlockSize = params.preemptiveBlockSize;
-    settings.loIterations = params.loIterations;
-    settings.loSampleSize = params.loSampleSize;
-    settings.loScale = problem.threshold * kLoScaleFraction;
-    settings.loBand = kLoBand;
+    settings.lo.iterations = params.loIterations;
+    settings.lo.sampleSize = params.loSampleSize;
+    settings.lo.scale = problem.threshold * kLoScaleFraction;
+    settings.lo.band = kLoBand;
     settings.prosac = params.sampler == SAMPLING_PROSAC;
     settings.napsacEvery = params.sampler == SAMPLING_NAPSAC               ? 1
                            : params.sampler == SAMPLING_PROGRESSIVE_NAPSAC ? 2
@@ -302,7 +302,7 @@ Mat estimate(const Problem& problem, const EssentialParams& params, OutputArray 
     if (found.found && params.inFrontCheck && params.engine == ENGINE_ADAPTIVE &&
         params.score == SCORE_METHOD_MSAC && settings.sampleCheirality) {
         // A winner with many inliers behind the cameras is a wrong model that the plain MSAC cost
-        // preferred (ransac/in_front_score.hpp): search again scoring only the inliers in front,
+        // preferred (scoring/in_front_score.hpp): search again scoring only the inliers in front,
         // and keep whichever winner has the lower in-front cost.
         const int inFront = ransac::inliersInFront(found.E, problem, problem.threshold);
         // The second search gets at most the confidence cap of maxIters (not the extended
@@ -332,13 +332,7 @@ Mat estimate(const Problem& problem, const EssentialParams& params, OutputArray 
                     rep.inFrontSearchKept = true;
                 }
             }
-            found.iterations += second.iterations;
-            found.hypothesesGenerated += second.hypothesesGenerated;
-            found.hypothesesConverged += second.hypothesesConverged;
-            found.hypothesesScored += second.hypothesesScored;
-            found.pointsScored += second.pointsScored;
-            found.localOptimisations += second.localOptimisations;
-            found.localOptimisationsKept += second.localOptimisationsKept;
+            found.addWork(second);
         }
     }
     rep.iterations = found.iterations;

@@ -2,7 +2,7 @@
 // See the LICENSE file at the top of the source tree.
 // The signs of a correspondence's two depths under a pose, without triangulating: what both
 // cheirality tests need (the sample check of solvers/sample_cheirality.hpp and the in-front score
-// of ransac/in_front_score.hpp), each with its own parallax below which the signs are noise's.
+// of scoring/in_front_score.hpp), each with its own parallax below which the signs are noise's.
 #ifndef OPENCV_ESSENTIAL_GEOMETRY_DEPTH_SIGNS_HPP
 #define OPENCV_ESSENTIAL_GEOMETRY_DEPTH_SIGNS_HPP
 

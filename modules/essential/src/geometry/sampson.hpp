@@ -5,7 +5,7 @@
 // of its geometric (reprojection) error, r^2 / (|(E q1)_xy|^2 + |(E^T q2)_xy|^2). It is the error
 // cv::findEssentialMat thresholds, so thresholds mean the same in both.
 //
-// The one implementation in the module: scoring (ransac/msac_score.cpp), the support test, the
+// The one implementation in the module: scoring (scoring/msac_score.cpp), the support test, the
 // refinement's normal equations (refine/irls_refinement.cpp) and the 5-DOF Jacobian
 // (geometry/essential_parameterisation.hpp) all build on sampsonTerms() and
 // sampsonScaledGradient() below. Everything is scalar and inline on purpose: called from a loop

@@ -8,10 +8,10 @@
 #include "opencv2/essential.hpp"
 
 #include "drop_in_estimate.hpp"
-#include "point_layouts.hpp"
+#include "input/point_layouts.hpp"
+#include "input/problem.hpp"
 #include "pose/pose_recovery.hpp"
 #include "pose/pose_recovery_dlt.hpp"
-#include "problem.hpp"
 
 #include <cmath>
 #include <string>

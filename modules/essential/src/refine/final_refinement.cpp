@@ -4,7 +4,7 @@
 #include "refine/final_refinement.hpp"
 
 #include "pose/pose_recovery.hpp"
-#include "ransac/msac_score.hpp"
+#include "scoring/msac_score.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -7,7 +7,7 @@
 #ifndef OPENCV_ESSENTIAL_REFINE_FINAL_REFINEMENT_HPP
 #define OPENCV_ESSENTIAL_REFINE_FINAL_REFINEMENT_HPP
 
-#include "problem.hpp"
+#include "input/problem.hpp"
 #include "refine/irls_refinement.hpp"
 
 #include <opencv2/core.hpp>

@@ -1,0 +1,149 @@
+// This file is part of opencv_essential, licensed under the Apache License, Version 2.0.
+// See the LICENSE file at the top of the source tree.
+
+#include "input/problem.hpp"
+
+#include <opencv2/calib3d.hpp>
+
+#include <cmath>
+#include <string>
+
+namespace cv {
+namespace essential {
+
+namespace {
+
+[[noreturn]] void badArg(const std::string& message)
+{
+    CV_Error(Error::StsBadArg, message);
+}
+
+} // namespace
+
+void checkPointSets(const std::vector<Point2d>& p1, const std::vector<Point2d>& p2, int minPoints)
+{
+    if (p1.size() != p2.size())
+        badArg("points1 and points2 differ in size (" + std::to_string(p1.size()) + " vs " +
+               std::to_string(p2.size()) + ")");
+    if (static_cast<int>(p1.size()) < minPoints)
+        badArg("at least " + std::to_string(minPoints) + " point correspondences are needed (got " +
+               std::to_string(p1.size()) + ")");
+}
+
+Matx33d readCameraMatrix(InputArray cameraMatrix, const char* name)
+{
+    const std::string arg(name);
+    if (cameraMatrix.empty()) badArg(arg + " is empty: a 3 x 3 camera matrix is needed");
+    Mat m = cameraMatrix.getMat();
+    if (m.rows != 3 || m.cols != 3 || m.channels() != 1)
+        badArg(arg + " must be a 3 x 3 one-channel matrix (got " + std::to_string(m.rows) + " x " +
+               std::to_string(m.cols) + " with " + std::to_string(m.channels()) + " channels)");
+    // Any integer or floating depth, as cv::findEssentialMat converts it (CV_16F aside).
+    if (m.depth() == CV_16F) badArg(arg + " must not be CV_16F");
+    Matx33d K;
+    Mat(m).convertTo(Mat(3, 3, CV_64F, K.val), CV_64F);
+    for (int i = 0; i < 9; ++i)
+        if (!std::isfinite(K.val[i])) badArg(arg + " has a non-finite entry");
+    // A negative focal length mirrors the image: cv::findEssentialMat accepts it silently, but
+    // then the cheirality test and the pixel threshold mean something else; reject it.
+    if (!(K(0, 0) > 0.0) || !(K(1, 1) > 0.0))
+        badArg(arg + " must have positive focal lengths (got fx = " + std::to_string(K(0, 0)) +
+               ", fy = " + std::to_string(K(1, 1)) + ")");
+    if (std::abs(K(2, 0)) > 1e-9 || std::abs(K(2, 1)) > 1e-9 || std::abs(K(2, 2) - 1.0) > 1e-9)
+        badArg(arg + " must have a last row of 0 0 1");
+    const double det = determinant(K);
+    if (!(std::abs(det) > 1e-12 * std::abs(K(0, 0) * K(1, 1)))) badArg(arg + " is singular");
+    return K;
+}
+
+Matx33d cameraFromFocal(double focal, Point2d pp)
+{
+    if (!std::isfinite(focal) || !(focal > 0.0))
+        badArg("focal must be finite and positive, got " + std::to_string(focal));
+    if (!std::isfinite(pp.x) || !std::isfinite(pp.y)) badArg("pp must be finite");
+    return Matx33d(focal, 0, pp.x, 0, focal, pp.y, 0, 0, 1);
+}
+
+std::vector<Point2d> normalisePoints(const std::vector<Point2d>& pixels, const Matx33d& K)
+{
+    // K^-1 for an upper-triangular K with K(2,2) = 1: y = (v - cy) / fy, x = (u - cx - s y) / fx.
+    const double fx = K(0, 0), fy = K(1, 1), s = K(0, 1), cx = K(0, 2), cy = K(1, 2);
+    std::vector<Point2d> out(pixels.size());
+    for (size_t i = 0; i < pixels.size(); ++i) {
+        const double y = (pixels[i].y - cy) / fy;
+        out[i] = Point2d((pixels[i].x - cx - s * y) / fx, y);
+    }
+    return out;
+}
+
+void checkNormalisedPoints(const std::vector<Point2d>& normalised, const char* name)
+{
+    for (size_t i = 0; i < normalised.size(); ++i) {
+        const Point2d& p = normalised[i];
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !(std::abs(p.x) <= kMaxNormalised) ||
+            !(std::abs(p.y) <= kMaxNormalised))
+            badArg(std::string(name) + " at index " + std::to_string(i) +
+                   " is more than 1e8 focal lengths from the principal point (or not finite) "
+                   "once normalised by the camera matrix: no camera sees such a point");
+    }
+}
+
+double normalisedThreshold(double threshold, double meanFocal)
+{
+    const double t = threshold / meanFocal;
+    if (!(t > 0.0) || !std::isfinite(t))
+        badArg("threshold / focal length is not a positive finite number (threshold " +
+               std::to_string(threshold) + ", focal " + std::to_string(meanFocal) + ")");
+    return t;
+}
+
+Problem makeProblem(std::vector<Point2d> n1, std::vector<Point2d> n2, double threshold,
+                    EssentialDistance distance)
+{
+    Problem p;
+    const size_t n = n1.size();
+    p.x1.resize(n);
+    p.y1.resize(n);
+    p.x2.resize(n);
+    p.y2.resize(n);
+    for (size_t i = 0; i < n; ++i) {
+        p.x1[i] = n1[i].x;
+        p.y1[i] = n1[i].y;
+        p.x2[i] = n2[i].x;
+        p.y2[i] = n2[i].y;
+    }
+    p.p1 = std::move(n1);
+    p.p2 = std::move(n2);
+    p.threshold = threshold;
+    p.distance = distance;
+    return p;
+}
+
+void checkConfidence(double prob)
+{
+    if (!(prob > 0.0 && prob < 1.0))
+        badArg("prob (confidence) must be in (0, 1), got " + std::to_string(prob));
+}
+
+void checkThreshold(double threshold)
+{
+    if (!(threshold > 0.0) || !std::isfinite(threshold))
+        badArg("threshold must be positive and finite, got " + std::to_string(threshold));
+}
+
+void checkMaxIters(int maxIters, const char* name)
+{
+    if (maxIters <= 0)
+        badArg(std::string(name) + " must be positive, got " + std::to_string(maxIters));
+}
+
+void checkMethod(int method)
+{
+    const bool usac = method >= USAC_DEFAULT && method <= USAC_MAGSAC;
+    if (method != RANSAC && method != LMEDS && !usac)
+        badArg("method " + std::to_string(method) +
+               " is not supported: use RANSAC, LMEDS or a USAC_* flag");
+}
+
+} // namespace essential
+} // namespace cv

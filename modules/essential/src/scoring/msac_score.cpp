@@ -1,0 +1,145 @@
+// This file is part of opencv_essential, licensed under the Apache License, Version 2.0.
+// See the LICENSE file at the top of the source tree.
+
+#include "scoring/msac_score.hpp"
+
+#include "geometry/sampson.hpp"
+#include "geometry/symmetric_epipolar.hpp"
+#include "simd_dispatch.hpp"
+
+#include <algorithm>
+
+namespace cv {
+namespace essential {
+namespace ransac {
+
+namespace {
+
+/** Squared inlier distances of points [begin, end) written to err: the Sampson distance
+(geometry/sampson.hpp) or the symmetric epipolar distance (geometry/symmetric_epipolar.hpp), as the
+problem says. The choice is made once per block, outside the loops; each loop runs over plain
+arrays with the nine entries of E in registers, and the compiler vectorises it (two doubles per
+SSE2 register, four with AVX). A point on the epipoles gives NaN or +inf, which never passes the
+`<=` tests below, so it counts as an outlier at full truncated cost. */
+inline void distanceBlock(const Matx33d& E, const Problem& problem, int begin, int end, double* err)
+{
+    const geometry::EssentialEntries e(E);
+    const double* x1 = problem.x1.data();
+    const double* y1 = problem.y1.data();
+    const double* x2 = problem.x2.data();
+    const double* y2 = problem.y2.data();
+    if (problem.distance == DISTANCE_SYMMETRIC_EPIPOLAR) {
+        for (int i = begin; i < end; ++i)
+            err[i - begin] = geometry::symmetricEpipolarSquared(e, x1[i], y1[i], x2[i], y2[i]);
+    } else {
+        for (int i = begin; i < end; ++i)
+            err[i - begin] = geometry::sampsonSquared(e, x1[i], y1[i], x2[i], y2[i]);
+    }
+}
+
+/** Block length of the partial scoring: long enough to vectorise and amortise the early-exit test,
+short enough that a losing hypothesis stops early and that the buffer stays on the stack. */
+constexpr int kBlock = 64;
+
+} // namespace
+
+Score scoreMsac(const Matx33d& E, const Problem& problem, double bestCost)
+{
+    return scoreMsacRange(E, problem, 0, problem.size(), bestCost);
+}
+
+ESSENTIAL_AVX2_CLONES Score scoreMsacRange(const Matx33d& E, const Problem& problem, int first,
+                                           int last, double bestCost)
+{
+    const double t2 = problem.threshold * problem.threshold;
+    Score s;
+    s.cost = 0.0;
+    double err[kBlock];
+    for (int begin = first; begin < last; begin += kBlock) {
+        const int end = std::min(last, begin + kBlock);
+        distanceBlock(E, problem, begin, end, err);
+        double cost = 0.0;
+        int inliers = 0;
+        for (int i = 0; i < end - begin; ++i) {
+            const bool in = err[i] <= t2;
+            cost += in ? err[i] : t2;
+            inliers += in;
+        }
+        s.cost += cost;
+        s.inliers += inliers;
+        s.scored += end - begin;
+        if (s.cost >= bestCost) return s;
+    }
+    return s;
+}
+
+/** Block length of the SPRT scoring: the test usually rejects a bad hypothesis after 10 to 20
+points, so shorter blocks than kBlock waste less of the vectorised distance computation. */
+constexpr int kSprtBlock = 16;
+
+ESSENTIAL_AVX2_CLONES Score scoreMsacSprt(const Matx33d& E, const Problem& problem, double bestCost,
+                                          const SprtTest& test, bool& rejected)
+{
+    const double t2 = problem.threshold * problem.threshold;
+    const int n = problem.size();
+    Score s;
+    s.cost = 0.0;
+    rejected = false;
+    double logLambda = 0.0;
+    double err[kSprtBlock];
+    for (int begin = 0; begin < n; begin += kSprtBlock) {
+        const int end = std::min(n, begin + kSprtBlock);
+        distanceBlock(E, problem, begin, end, err);
+        for (int i = 0; i < end - begin; ++i) {
+            const bool in = err[i] <= t2;
+            s.cost += in ? err[i] : t2;
+            s.inliers += in;
+            logLambda += in ? test.logIn : test.logOut;
+            if (logLambda > test.logA) {
+                s.scored = begin + i + 1;
+                rejected = true;
+                return s;
+            }
+        }
+        s.scored = end;
+        if (s.cost >= bestCost) return s;
+    }
+    return s;
+}
+
+ESSENTIAL_AVX2_CLONES void sampsonErrors(const Matx33d& E, const Problem& problem, double* errors)
+{
+    const geometry::EssentialEntries e(E);
+    for (int i = 0; i < problem.size(); ++i)
+        errors[i] =
+            geometry::sampsonSquared(e, problem.x1[i], problem.y1[i], problem.x2[i], problem.y2[i]);
+}
+
+ESSENTIAL_AVX2_CLONES void squaredDistances(const Matx33d& E, const Problem& problem,
+                                            double* errors)
+{
+    distanceBlock(E, problem, 0, problem.size(), errors);
+}
+
+ESSENTIAL_AVX2_CLONES int inlierMask(const Matx33d& E, const Problem& problem, double threshold,
+                                     uchar* mask)
+{
+    const int n = problem.size();
+    const double t2 = threshold * threshold;
+    double err[kBlock];
+    int count = 0;
+    for (int begin = 0; begin < n; begin += kBlock) {
+        const int end = std::min(n, begin + kBlock);
+        distanceBlock(E, problem, begin, end, err);
+        for (int i = 0; i < end - begin; ++i) {
+            const bool in = err[i] <= t2;
+            mask[begin + i] = in ? 1 : 0;
+            count += in;
+        }
+    }
+    return count;
+}
+
+} // namespace ransac
+} // namespace essential
+} // namespace cv

@@ -48,7 +48,7 @@ struct Args
     std::string camera = "paper";
     double threshold = 1.0;
     int lo = 5;
-    double loBand = 2.0, loScale = 1.0; // the library's (find_essential.cpp)
+    double loBand = 2.0, loScale = 1.0; // the library's (pipeline/estimate.cpp)
     uint64_t seed = 1;
     std::vector<std::string> only; //!< run only candidates whose name contains one of these
 };

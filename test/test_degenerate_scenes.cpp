@@ -264,7 +264,7 @@ TEST(DegenerateScenes, ExactlyFivePointsListEverySolution)
         }
         // Closest root measured at most 9.7e-8 (gcc Release) and 7.8e-6 (clang -O1, sanitizer
         // build: other rounding, other iterative starts); 1e-4 is the module's own "same root"
-        // tolerance (kSameSolution in find_essential.cpp). A wrong root is 0.1 or more away.
+        // tolerance (kSameSolution in search/minimal_set.cpp). A wrong root is 0.1 or more away.
         found += best < 1e-4;
         std::cout << "five points, seed " << seed << ": " << E.rows / 3
                   << " solutions, closest to the truth " << best << "\n";

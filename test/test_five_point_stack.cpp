@@ -47,7 +47,7 @@ TEST(FivePointStack, TiedEntriesDoNotDuplicateARoot)
 {
     // Forward motion without rotation: E = [e_z]x has the entries -1 and +1, a tie for the
     // largest magnitude, so the canonical sign flips between copies of the same root found from
-    // different starts. gn runs 120 rotated copies of the problem (find_essential.cpp), so it
+    // different starts. gn runs 120 rotated copies of the problem (search/minimal_set.cpp), so it
     // finds the true root many times over.
     for (const char* solver : {"gn", "lm", "nister", "gn+nister"}) {
         SCOPED_TRACE(solver);

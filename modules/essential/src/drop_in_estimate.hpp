@@ -2,12 +2,14 @@
 // See the LICENSE file at the top of the source tree.
 
 // The pieces of findEssentialMatIter that the two-camera recoverPose shares (find_essential.cpp):
-// the drop-in settings of OpenCV's arguments and the estimate from two cameras with distortion.
+// the estimate from two cameras with distortion (and, through input/params_from_opencv.hpp, the
+// drop-in settings of OpenCV's arguments).
 
 #ifndef OPENCV_ESSENTIAL_DROP_IN_ESTIMATE_HPP
 #define OPENCV_ESSENTIAL_DROP_IN_ESTIMATE_HPP
 
 #include "input/mask_output.hpp"
+#include "input/params_from_opencv.hpp"
 #include "input/point_layouts.hpp"
 
 #include "opencv2/essential/params.hpp"
@@ -18,10 +20,6 @@
 
 namespace cv {
 namespace essential {
-
-/** The settings of a drop-in overload from OpenCV's method, prob, threshold and maxIters (the
-table in essential.hpp); throws StsBadArg naming an invalid argument. */
-EssentialParams dropInParams(int method, double prob, double threshold, int maxIters);
 
 /** E from two cameras, each view undistorted and normalised with its own camera matrix and
 distortion, the pixel threshold converted with the mean focal length of the two cameras (as

@@ -7,6 +7,7 @@
 #include "geometry/symmetric_epipolar.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace cv {
@@ -86,6 +87,25 @@ bool supportIsSignificant(const Matx33d& E, const Problem& problem, double thres
 {
     const int needed = significantInliers(E, problem, threshold, sampleSize, hypotheses);
     return needed < 0 || inliers >= needed;
+}
+
+bool moreDistinctInliersThan(const Problem& problem, const std::vector<uchar>& mask, int count)
+{
+    std::array<size_t, kMinimalSample + 1> distinct{};
+    int found = 0;
+    for (size_t i = 0; i < mask.size(); ++i) {
+        if (!mask[i]) continue;
+        bool repeated = false;
+        for (int k = 0; k < found && !repeated; ++k) {
+            const size_t j = distinct[static_cast<size_t>(k)];
+            repeated = problem.x1[i] == problem.x1[j] && problem.y1[i] == problem.y1[j] &&
+                       problem.x2[i] == problem.x2[j] && problem.y2[i] == problem.y2[j];
+        }
+        if (repeated) continue;
+        distinct[static_cast<size_t>(found++)] = i;
+        if (found > count) return true;
+    }
+    return false;
 }
 
 } // namespace ransac

@@ -13,6 +13,8 @@
 
 #include <opencv2/core.hpp>
 
+#include <vector>
+
 namespace cv {
 namespace essential {
 namespace ransac {
@@ -35,6 +37,16 @@ bool supportIsSignificant(const Matx33d& E, const Problem& problem, double thres
 `hypotheses` hypotheses tried; -1 when the test has no power (every count is accepted). */
 int significantInliers(const Matx33d& E, const Problem& problem, double threshold, int sampleSize,
                        int hypotheses);
+
+/** Five correspondences are a minimal set: an essential matrix fits any five exactly. */
+constexpr int kMinimalSample = 5;
+
+/** Whether the inliers hold more than `count` (<= kMinimalSample) distinct correspondences.
+Repeated correspondences add no constraint: five distinct points given twelve times each are fitted
+exactly by up to ten essential matrices, and 60 "inliers" of one of them are no evidence (the
+chance-support test counts points, not distinct ones). Stops at the first count + 1 distinct ones,
+so on ordinary data it looks at a handful of points. */
+bool moreDistinctInliersThan(const Problem& problem, const std::vector<uchar>& mask, int count);
 
 } // namespace ransac
 } // namespace essential

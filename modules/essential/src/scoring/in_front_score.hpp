@@ -5,7 +5,7 @@
 // collect inliers that no pose of it places in front of the cameras; on real pairs such a model can
 // have a lower plain MSAC cost than the true one (castle-P30 0023-0024 in docs/REAL_PAIRS.md: 8% of
 // its inliers behind a camera, 14.9 degrees off). This score is for a second search when the winner
-// of the first has that many inliers behind (find_essential.cpp): it decomposes each hypothesis
+// of the first has that many inliers behind (pipeline/estimate.cpp): it decomposes each hypothesis
 // that survives the plain score's early exit, so it costs more per hypothesis than scoreMsac.
 #ifndef OPENCV_ESSENTIAL_SCORING_IN_FRONT_SCORE_HPP
 #define OPENCV_ESSENTIAL_SCORING_IN_FRONT_SCORE_HPP

@@ -30,13 +30,13 @@ transfer distance in one image is about twice the Sampson distance for the same 
 constexpr double kPlaneBand = 2.0;
 constexpr double kMemberBand = 4.0;
 
-/** 2-point samples drawn when a plane dominates: each costs one MSAC score on all points (about
-2 ns per point, 2 ms for 500 samples on 2000 points, against the 100 ms such a hard call takes), and
-at 12% off-plane inliers among the candidates (the dominant-plane scenes of the tests) 500 samples
+/** 2-point samples drawn when a plane dominates: each costs one MSAC score on all points (a small
+share of what such a hard call takes: docs/TUNING.md, "Plane and parallax"), and at 12% off-plane
+inliers among the candidates (the dominant-plane scenes of the tests) 500 samples
 hold a clean pair with probability 0.999. */
 constexpr int kMaxParallaxSamples = 500;
 
-/** The best 2-point models by loose cost that are polished and compared (about 0.1 ms each). */
+/** The best 2-point models by loose cost that are polished and compared (each an IRLS polish). */
 constexpr int kPolishedCandidates = 8;
 
 /** The 2-point models are ranked on the points within this many thresholds of them, and
@@ -58,14 +58,14 @@ constexpr double kSignificance = 2.5;
 /** The homography's own RANSAC (OpenCV's findHomography on the model's inliers). The check only
 matters when at least kPlaneShare of them are on the plane: then a 4-point sample is clean with
 probability >= 0.0625 and 72 samples reach 0.99; a cap of 100 bounds the cost on scenes without a
-plane, where it would otherwise run its 2000 default iterations (20 ms for 450 inliers). */
+plane, where it would otherwise run its 2000 default iterations. */
 constexpr int kHomographyIterations = 100;
 constexpr double kHomographyConfidence = 0.99;
 
 /** Only winners supported by less than this fraction of the points are checked. Above it the
 search has drawn many clean samples, most of them with off-plane points, and MSAC has already
-preferred the model they support; and even the plane probes (0.1 ms) would be a large share of an
-easy call (0.3 ms at 90% inliers, N = 500). */
+preferred the model they support; and even the plane probes would be a large share of an easy
+call (docs/TUNING.md, "Plane and parallax"). */
 constexpr double kMaxCheckedInlierRatio = 0.5;
 
 /** The essential matrix nearest to M in Frobenius norm: singular values (1, 1, 0). */
@@ -118,7 +118,7 @@ bool homographyOf4(const Point2d* a, const Point2d* b, Matx33d& H)
 kProbeBand plane bands (a homography through four noisy points is off away from them); true when
 one explains at least kProbeShare of them. With half of the inliers on a plane a probe's sample is
 clean with probability 1/16, so 40 probes miss it with probability 0.08 (0.00003 at 80%); on
-scenes without a plane it costs about 0.1 ms instead of the full fit's 1 ms. */
+scenes without a plane it costs a tenth of the full fit (docs/TUNING.md, "Plane and parallax"). */
 constexpr int kPlaneProbes = 40;
 constexpr int kProbePoints = 32;
 constexpr double kProbeShare = 0.3;

@@ -50,15 +50,15 @@ within kLoBand thresholds of the model with a Cauchy scale of kLoScaleFraction t
 final refinement does when the noise is half the threshold (refine/final_refinement.hpp): the
 points within one threshold of a model that is off are biased towards it. Measured with
 bench/essential_accuracy_candidates (N = 500; docs/ACCURACY.md): against 1 threshold and half of
-it, the search draws 22 / 420 samples instead of 24 / 464 at 90 / 50% inliers and takes 0.17 / 2.04
-ms instead of 0.19 / 2.22 ms (400 problems), and the final estimate is as precise (AUC@1 0.944 /
-0.917 against 0.944 / 0.918, 300 problems). */
+it, the search draws 22 / 420 samples instead of 24 / 464 at 90 / 50% inliers (400 problems; the
+times are in docs/TUNING.md, "Local optimisation band"), and the final estimate is as precise
+(AUC@1 0.944 / 0.917 against 0.944 / 0.918, 300 problems). */
 constexpr double kLoBand = 2.0;
 constexpr double kLoScaleFraction = 1.0;
 
-/** Time kept back from a time budget for what follows the search: the IRLS refinement (measured
-0.21 ms for 500 points with its cap of 20 iterations, about 0.4 us per point), the mask and the
-pose. docs/ENGINE.md has the overshoot measurement that checks it. */
+/** Time kept back from a time budget for what follows the search: the IRLS refinement (linear in
+the points, its measured cost in docs/TUNING.md, "Finishing reserve"), the mask and the pose.
+docs/ENGINE.md has the overshoot measurement that checks it. */
 double finishingReserveMs(int numPoints)
 {
     return 0.05 + 0.0005 * numPoints;

@@ -75,8 +75,8 @@ struct FinalRefinementSettings
     maxRounds) when the noise estimated around the result is below nextRoundBelow times the noise
     the round was set up with. A start that is off inflates the noise estimate, and the band and
     the loss follow it; the search winners do not (one round, whose result a second round changed
-    by -0.001 to +0.002 AUC@1 for 30 us more), starts 0.1 to 0.3 degrees off the truth do
-    (test_final_refinement.cpp). */
+    by -0.001 to +0.002 AUC@1 for a second refinement's time), starts 0.1 to 0.3 degrees off the
+    truth do (test_final_refinement.cpp). */
     int maxRounds = 2;
     double nextRoundBelow = 0.8;
     /** The IRLS's cap and stopping rule (IrlsSettings): on these points, caps from 5 to 100 and

@@ -30,8 +30,8 @@ struct IrlsSettings
     /** Outer (reweighting) iterations. Measured on 200 problems of the synthetic protocol (N = 500,
     50% inliers, from the MSAC winner): most refinements stop after 5 or 6 iterations and 7 of 200
     reach this cap; mean pose errors 0.032 deg (rotation) and 0.170 deg (translation direction),
-    0.21 ms per call. A cap of 200 with a tolerance of 1e-10 gave the same errors to 0.001 deg at
-    twice the time (IRLS converges linearly as the weights keep changing). */
+    (docs/TUNING.md, "IRLS cap"). A cap of 200 with a tolerance of 1e-10 gave the same errors to
+    0.001 deg at twice the time (IRLS converges linearly as the weights keep changing). */
     int maxIterations = 20;
     /** Stop when an accepted step lowers the robust cost by less than this fraction (see above). */
     double relativeTolerance = 1e-6;

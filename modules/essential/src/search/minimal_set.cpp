@@ -22,7 +22,8 @@ rotated copies of the problem: view 1's points are rotated by a random Q (q1' ~ 
 the solver's start relative to the data, and each solution E' of the copy maps back to E = E' Q.
 Measured with gn on 200 noise-free problems of the paper's protocol (cv::findEssentialMat finds
 4.70 real roots on average there, the true one always): 30 / 60 / 120 copies find 4.21 / 4.53 /
-4.67 roots and the true E in 192 / 197 / 199 problems, in 0.16 / 0.19 / 0.31 ms per call. */
+4.67 roots and the true E in 192 / 197 / 199 problems (the time per call in docs/TUNING.md, "Five
+points exactly"). */
 constexpr int kFivePointStarts = 120;
 
 /** Largest rotation of the copies: the solvers start at R = I, so this spreads their starts over

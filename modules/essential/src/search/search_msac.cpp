@@ -25,10 +25,9 @@ namespace ransac {
 namespace {
 
 /** The SPRT's t_M: the time to generate the models of one sample in units of the time to check one
-point. From essential_engines --part sprt at N = 1000 (SPRT on and off, the same samples): about
-4.5 us per solver call (gn+nister) and 1.4 ns per point check, a ratio near 3000. A depends on it
-only through K = t_M C / m_S + 1 and A = K + log A: doubling it moves the rejection by about one
-point check. */
+point. From essential_engines --part sprt at N = 1000 (SPRT on and off, the same samples): a
+ratio near 3000 (docs/TUNING.md, "SPRT constants"). A depends on it only through
+K = t_M C / m_S + 1 and A = K + log A: doubling it moves the rejection by about one point check. */
 constexpr double kSprtHypothesisCost = 2500.0;
 
 /** The SPRT's delta before any bad model was rejected: a random point lies within the threshold of
@@ -38,10 +37,10 @@ constexpr double kSprtInitialDelta = 0.01;
 
 /** The confidence the stopping rule asks for in the extended budget (SearchSettings::minSampleCap):
 1 - 1/e, one expected good sample at the best model's inlier ratio. Measured on the synthetic
-protocol at N = 500 (perf suite): with the full confidence of 0.999 there, the extension took 30%
-inliers from 6.9 to 30.7 ms and 25% from about 8 to 77 ms for a reliability of 0.993 / 0.983 ->
-1.000, where the hard sets (docs/HARD_PAIRS.md) need the extension only when the best ratio is far
-lower. */
+protocol at N = 500 (perf suite): with the full confidence of 0.999 there, the extension made 30%
+inliers 4.4 and 25% about 10 times slower (docs/TUNING.md, "Extended confidence") for a reliability
+of 0.993 / 0.983 -> 1.000, where the hard sets (docs/HARD_PAIRS.md) need the extension only when the
+best ratio is far lower. */
 constexpr double kExtendedConfidence = 0.6321205588285577;
 
 } // namespace

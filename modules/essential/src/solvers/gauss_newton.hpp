@@ -20,8 +20,8 @@ struct GaussNewtonSettings
 {
     /** Iterations before a hypothesis is abandoned. Measured (5000 noise-free minimal sets of the
     paper's protocol): caps 5 / 7 / 10 / 15 / 20 reach the true E in 22.9 / 31.9 / 35.7 / 37.9 /
-    39.2% of calls at 2.8 / 2.3 / 2.6 / 3.0 / 3.0 us per call; 10 is the knee of time per correct
-    hypothesis (7.4 us). */
+    39.2% of calls; 10 is the knee of time per correct hypothesis (docs/TUNING.md, "Solver
+    caps"). */
     int maxIterations = 10;
     /** Converged when the sum of squared algebraic residuals of the five points falls below this,
     i.e. residuals ~1e-7, far below the 1e-3 noise level of image measurements in normalised units;
@@ -44,9 +44,9 @@ struct GaussNewtonSettings
     std::vector<double> identityRateByRotation = {0.33, 0.10, 0.058, 0.053, 0.043, 0.040};
     /** Starts tried after R = I when it gave no solution in front of the cameras: the best of
     StartRotations for the sample that put it in front of the cameras at their start (0 to 8).
-    One lifts the rate at 45 to 90 degrees from 0.04-0.05 to 0.39-0.41 at 4 to 7.4 us per clean
-    sample; more starts add less (two: 0.48-0.52) while every contaminated sample pays for them
-    too (docs/SOLVERS.md, "Success rate by rotation"). */
+    One lifts the rate at 45 to 90 degrees from 0.04-0.05 to 0.39-0.41 for one more optimisation
+    per sample that needs it; more starts add less (two: 0.48-0.52) while every contaminated sample
+    pays for them too (docs/SOLVERS.md, "Success rate by rotation"). */
     int extraStarts = 1;
     /** Return a solution only if it can put the sample in front of both cameras
     (sampleIsInFront): the junk roots of contaminated samples then cost no scoring. */

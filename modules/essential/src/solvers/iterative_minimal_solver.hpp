@@ -32,7 +32,7 @@ returns the first such solution. A sample whose constraints are linearly depende
 (constraintsAreDependent). */
 /** What an engine or a composite may ask of an iterative solver: start from R = I only. The extra
 starts cost every contaminated sample a few more optimisations; next to a direct solver, which
-finds wide rotations at 5 us per sample (composite_solver.cpp), or when only the number of
+finds wide rotations in one call per sample (composite_solver.cpp), or when only the number of
 hypotheses per unit time counts (the preemptive engine), they are not worth it, and the rate by
 rotation becomes that of R = I alone. `keepCheirality` false also returns the roots that cannot put
 the sample in front of the cameras, as the solvers did before the filter: the preemptive engine
@@ -91,7 +91,7 @@ public:
         for (int k = 0, tried = 0; k < kRanked && tried < extra; ++k) {
             pose = bestTranslationStart(x1, x2, 5, StartRotations::instance()[order[k]]);
             // A start that cannot put the sample in front of the cameras rarely leads to a root
-            // that can: skipping it costs 0.1 us instead of an optimisation.
+            // that can: skipping it costs one depth test instead of an optimisation.
             if (settings_.requireCheirality && !sampleIsInFront(pose, x1, x2, 5)) continue;
             ++tried;
             ++lastStarts_;

@@ -18,9 +18,9 @@ namespace solvers {
 struct LevenbergMarquardtSettings
 {
     /** Trial steps (accepted or not) before a hypothesis is abandoned. Measured as for GN: caps
-    10 / 14 / 20 / 30 / 40 reach the true E in 33.4 / 37.2 / 40.1 / 41.9 / 43.0% of calls at 4.3
-    / 4.0 / 4.6 / 5.2 / 5.8 us per call. 14 and 20 tie per correct hypothesis (10.8 and 11.4 us,
-    within timing noise); 20 has the higher rate, which saves scoring passes. */
+    10 / 14 / 20 / 30 / 40 reach the true E in 33.4 / 37.2 / 40.1 / 41.9 / 43.0% of calls; 14 and
+    20 tie in time per correct hypothesis (docs/TUNING.md, "Solver caps"), and 20 has the higher
+    rate, which saves scoring passes. */
     int maxIterations = 20;
     /** Converged when the sum of squared algebraic residuals falls below this (see GN). */
     double convergedCost = 1e-14;

@@ -70,8 +70,8 @@ struct NisterSettings
     one has max |A_ij| max |B_ij| <= acceptableCondition and no real root beyond maxAbsRoot, else
     the best one tried is used (well conditioned first, then fewest roots abandoned). */
     int frames = 3;
-    /** See `frames`. With 200, 1.69 frames are prepared per call on average (each costs about
-    0.9 us: null space, M, its reduction, d and the Sturm sequence) and 0.7% of the calls return a
+    /** See `frames`. With 200, 1.69 frames are prepared per call on average (each a null space,
+    M, its reduction, d and the Sturm sequence) and 0.7% of the calls return a
     solution whose essential residual is above 1e-6; with 100, 1.87 frames and 0.6%; with 400,
     1.50 frames and 0.9%. Selecting on max |B_ij| alone does worse at every cost. */
     double acceptableCondition = 200.0;

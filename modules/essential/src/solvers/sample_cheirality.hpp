@@ -60,7 +60,7 @@ inline bool anyPoseInFront(const Eigen::Matrix3d& R, const Eigen::Vector3d& t, c
 
 /** Whether one of the four poses (R, +-t), (R', +-t) of E = [t]x R, with R' = (2 t t^T - I) R the
 twisted pair, puts every sample point with a decided depth (kMinCheiralityParallax) in front of
-both cameras. About 0.1 us for five points. */
+both cameras. */
 inline bool sampleIsInFront(const geometry::EssentialPose& pose, const Point2d* x1,
                             const Point2d* x2, int n)
 {

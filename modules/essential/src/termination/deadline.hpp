@@ -12,8 +12,8 @@ namespace essential {
 namespace ransac {
 
 /** A point in time after which a search returns what it has; inactive (never passed) by default.
-Reading the steady clock costs about 20 ns, so loops check it every few iterations, not per point.
-*/
+Reading the clock costs more than checking a point, so loops read it every few iterations, not
+per point (docs/TUNING.md, "Deadline checks"). */
 struct Deadline
 {
     typedef std::chrono::steady_clock Clock;

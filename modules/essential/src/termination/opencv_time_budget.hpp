@@ -2,11 +2,12 @@
 // See the LICENSE file at the top of the source tree.
 
 // The sample budget "what OpenCV would have spent": cv::findEssentialMat's RANSAC pays for each of
-// its maxIters iterations a 5-point solve (about 125 us) and an error evaluation of every root on
-// every point, while a sample of this module costs a few microseconds (SPRT stops most hypotheses
-// after a few dozen point checks). On hard data (few inliers, the stopping rule never satisfied)
-// OpenCV runs its maxIters iterations; this budget lets the module draw as many samples as fit in
-// that time, so that it spends no more than OpenCV yet tries about twenty times more samples.
+// its maxIters iterations a 5-point solve and an error evaluation of every root on every point,
+// while a sample of this module costs some twenty to thirty times less (SPRT stops most hypotheses
+// after a few dozen point checks; docs/TUNING.md, "The OpenCV-time budget"). On hard data (few
+// inliers, the stopping rule never satisfied) OpenCV runs its maxIters iterations; this budget lets
+// the module draw as many samples as fit in that time, so that it spends no more than OpenCV yet
+// tries about twenty times more samples.
 
 #ifndef OPENCV_ESSENTIAL_TERMINATION_OPENCV_TIME_BUDGET_HPP
 #define OPENCV_ESSENTIAL_TERMINATION_OPENCV_TIME_BUDGET_HPP
@@ -18,19 +19,10 @@ namespace cv {
 namespace essential {
 namespace ransac {
 
-/** Cost models in microseconds of thread CPU time, fitted to runs that reach the iteration cap
-(synthetic protocol, 3% inliers, 3 problems per N; GCC -O3, one core of the development machine;
-build/bench/essential_opencv_time_model):
-
-    N                           100    250    500   1000   2000   4000   8000
-    OpenCV RANSAC, us / iter    132    143    155    176    218    362    588
-    module default, us / sample 4.99   5.98   6.52   7.54   8.69  11.8   16.8
-
-(the module's per-sample figure includes its refinement and setup, spread over about 1900 samples).
-Both grow linearly in N: OpenCV's about 125 + 0.058 N, the module's about 5 + 0.0015 N, a ratio of
-25 to 35. A second run on a busier machine gave 163 to 702 us against 6.8 to 15.8 us, ratios 24 to
-44: only the ratio matters, and the model's is at the low end, which keeps the budget on the safe
-side of OpenCV's time. */
+/** Cost models in microseconds of thread CPU time, linear in N, fitted to runs that reach the
+iteration cap (essential_opencv_time_model; the table and the fit are in docs/TUNING.md, "The
+OpenCV-time budget"). Only their ratio matters, and the fit's is at the low end of the measured
+ones, which keeps the budget on the safe side of OpenCV's time. */
 inline double opencvIterationMicros(int n)
 {
     return 125.0 + 0.058 * n;

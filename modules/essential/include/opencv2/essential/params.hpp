@@ -163,7 +163,8 @@ struct CV_EXPORTS EssentialParams
     inliers are dominated by one plane (a homography explains at least half of them) and, if so,
     search the "plane and parallax" models E = [e']x H, the epipole e' fixed by pairs of points off
     the plane, keeping one if its MSAC cost is lower: on planar scenes a search tends to stop on the
-    plane's twin pose. Costs nothing when no plane dominates, about 1 ms otherwise. Default on. */
+    plane's twin pose. Costs nothing when no plane dominates, a few plane fits otherwise
+    (docs/TUNING.md, "Plane and parallax"). Default on. */
     bool planeParallax = true;
 
     /** After the search (ENGINE_ADAPTIVE with SCORE_METHOD_MSAC, sample cheirality on), count the

@@ -10,7 +10,9 @@ second at 1 and 2 threads against a Python loop over cv2.findEssentialMat.
   PYTHONPATH=build/python /usr/bin/python3 bench/python/bench_cv_essential.py [--problems 100]
 """
 import argparse
+import pathlib
 import statistics
+import sys
 import time
 
 import cv2
@@ -18,22 +20,9 @@ import numpy as np
 
 import cv_essential
 
-
-def scene(n, ratio, rng):
-    K = np.array([[500.0, 0, 320], [0, 500, 240], [0, 0, 1]])
-    X = np.column_stack([rng.uniform(-2, 2, n), rng.uniform(-2, 2, n), rng.uniform(4, 12, n)])
-    angle = rng.uniform(0.0, 0.3)
-    c, s = np.cos(angle), np.sin(angle)
-    R = np.array([[c, 0, s], [0, 1, 0], [-s, 0, c]])
-    t = rng.normal(size=3)
-    t /= np.linalg.norm(t)
-    x1 = X @ K.T
-    x2 = (X @ R.T + t) @ K.T
-    p1 = x1[:, :2] / x1[:, 2:] + rng.normal(0, 0.5, (n, 2))
-    p2 = x2[:, :2] / x2[:, 2:] + rng.normal(0, 0.5, (n, 2))
-    bad = rng.random(n) > ratio
-    p2[bad] = rng.uniform([0, 0], [640, 480], (int(bad.sum()), 2))
-    return p1, p2, K
+# The scenes of the Python examples (samples/python/synthetic_scene.py).
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "samples" / "python"))
+from synthetic_scene import synthetic_pair  # noqa: E402
 
 
 def cpu_ms(f):
@@ -67,7 +56,7 @@ def main():
     print("| inliers | cv_essential ms | cv2 ms | cv2 / ours | C++ call (params form) ms | binding overhead |")
     print("|---|---|---|---|---|---|")
     for ratio in (0.9, 0.5):
-        problems = [scene(args.points, ratio, rng) for _ in range(args.problems)]
+        problems = [synthetic_pair(args.points, ratio, rng) for _ in range(args.problems)]
         params = cv_essential.EssentialParams()
         # Speed against cv2: the drop-in form and cv2.findEssentialMat interleaved, per problem
         # the median of the rounds.
@@ -96,7 +85,7 @@ def main():
 
     # The fixed cost of a call, where the library does almost nothing (one sample, no refinement,
     # no pose): paired differences over many calls.
-    p1, p2, K = scene(args.points, 0.9, rng)
+    p1, p2, K = synthetic_pair(args.points, 0.9, rng)
     tiny = cv_essential.EssentialParams(maxIterations=1, sampleBudget=cv_essential.BUDGET_CONFIDENCE,
                                         refine=False, recoverPose=False, planeParallax=False)
     fixed = []
@@ -106,7 +95,7 @@ def main():
     print(f"\nfixed cost of a call (one sample, no refinement, {len(fixed)} paired calls): "
           f"{statistics.median(fixed) * 1000:.1f} us")
 
-    pairs = [scene(args.points, 0.5, rng) for _ in range(4 * args.problems)]
+    pairs = [synthetic_pair(args.points, 0.5, rng) for _ in range(4 * args.problems)]
     print(f"\nbatch of {len(pairs)} pairs (50% inliers), wall time")
     print("| method | pairs / s |")
     print("|---|---|")

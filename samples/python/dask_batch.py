@@ -16,33 +16,22 @@ On a real cluster every worker needs cv_essential importable (the package instal
 PYTHONPATH pointing at it) and the same OpenCV.
 """
 import argparse
+import pathlib
+import sys
 
 import numpy as np
 
 import cv_essential
 
+# The scene generator beside this file (also when the file is loaded by path, as its test does).
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+from synthetic_scene import synthetic_pair  # noqa: E402
+
 
 def synthetic_pairs(count, points=300, seed=1):
     """Pairs of a random scene and motion each (60% inliers), for the example."""
     rng = np.random.default_rng(seed)
-    K = np.array([[500.0, 0, 320], [0, 500, 240], [0, 0, 1]])
-    pairs = []
-    for _ in range(count):
-        X = np.column_stack([rng.uniform(-2, 2, points), rng.uniform(-2, 2, points),
-                             rng.uniform(4, 12, points)])
-        angle = rng.uniform(0.0, 0.2)
-        c, s = np.cos(angle), np.sin(angle)
-        R = np.array([[c, 0, s], [0, 1, 0], [-s, 0, c]])
-        t = rng.normal(size=3)
-        t /= np.linalg.norm(t)
-        x1 = X @ K.T
-        x2 = (X @ R.T + t) @ K.T
-        p1 = x1[:, :2] / x1[:, 2:] + rng.normal(0, 0.5, (points, 2))
-        p2 = x2[:, :2] / x2[:, 2:] + rng.normal(0, 0.5, (points, 2))
-        outliers = rng.random(points) < 0.4
-        p2[outliers] = rng.uniform([0, 0], [640, 480], (int(outliers.sum()), 2))
-        pairs.append((p1, p2, K))
-    return pairs
+    return [synthetic_pair(points, 0.6, rng, max_angle=0.2) for _ in range(count)]
 
 
 def estimate_partition(first, pairs, seed, threads=0):

@@ -15,6 +15,7 @@
 #include "synthetic_scene.hpp"
 
 #include "bench_common.hpp"
+#include "bench_options.hpp"
 #include "pose_accuracy.hpp"
 
 #include "geometry/essential_decomposition.hpp"
@@ -56,38 +57,19 @@ struct Args
 Args parse(int argc, char** argv)
 {
     Args a;
-    for (int i = 1; i + 1 < argc; i += 2) {
-        const std::string k = argv[i], v = argv[i + 1];
-        if (k == "--n")
-            a.n = std::atoi(v.c_str());
-        else if (k == "--problems")
-            a.problems = std::atoi(v.c_str());
-        else if (k == "--max-iters")
-            a.maxIters = std::atoi(v.c_str());
-        else if (k == "--camera")
-            a.camera = v;
-        else if (k == "--threshold")
-            a.threshold = std::atof(v.c_str());
-        else if (k == "--lo")
-            a.lo = std::atoi(v.c_str());
-        else if (k == "--lo-band")
-            a.loBand = std::atof(v.c_str());
-        else if (k == "--lo-scale")
-            a.loScale = std::atof(v.c_str());
-        else if (k == "--seed")
-            a.seed = std::strtoull(v.c_str(), nullptr, 10);
-        else if (k == "--ratios")
-            a.ratios = numbers(v);
-        else if (k == "--only") {
-            std::stringstream ss(v); // ';'-separated: the names hold commas
-            std::string part;
-            while (std::getline(ss, part, ';'))
-                a.only.push_back(part);
-        } else {
-            std::fprintf(stderr, "unknown option %s\n", k.c_str());
-            std::exit(2);
-        }
-    }
+    Options opts("essential_accuracy_candidates");
+    opts.add("n", a.n);
+    opts.add("problems", a.problems);
+    opts.add("max-iters", a.maxIters);
+    opts.add("camera", a.camera);
+    opts.add("threshold", a.threshold);
+    opts.add("lo", a.lo);
+    opts.add("lo-band", a.loBand);
+    opts.add("lo-scale", a.loScale);
+    opts.add("seed", a.seed);
+    opts.add("ratios", a.ratios);
+    opts.add("only", a.only, ';'); // the names hold commas
+    opts.parse(argc, argv);
     return a;
 }
 

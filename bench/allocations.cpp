@@ -18,6 +18,7 @@
 #include "synthetic_scene.hpp"
 
 #include "bench_common.hpp"
+#include "bench_options.hpp"
 #include <opencv2/core.hpp>
 #include <opencv2/essential.hpp>
 
@@ -131,23 +132,13 @@ int main(int argc, char** argv)
     uint64_t seed = 1;
     std::vector<double> ratios = {0.9, 0.5, 0.3};
     std::vector<Call> allCalls;
-    for (int i = 1; i + 1 < argc; i += 2) {
-        const std::string k = argv[i], v = argv[i + 1];
-        if (k == "--n")
-            n = std::atoi(v.c_str());
-        else if (k == "--problems")
-            problems = std::atoi(v.c_str());
-        else if (k == "--seed")
-            seed = std::strtoull(v.c_str(), nullptr, 10);
-        else if (k == "--ratios")
-            ratios = numbers(v);
-        else if (k == "--lo-iterations")
-            loIterations = std::atoi(v.c_str());
-        else {
-            std::fprintf(stderr, "unknown option %s\n", k.c_str());
-            return 2;
-        }
-    }
+    Options opts("essential_allocations");
+    opts.add("n", n);
+    opts.add("problems", problems);
+    opts.add("seed", seed);
+    opts.add("ratios", ratios);
+    opts.add("lo-iterations", loIterations);
+    opts.parse(argc, argv);
     cv::setNumThreads(1);
     std::printf("N = %d, %d problems per ratio, EssentialParams overload with its defaults but "
                 "loIterations = %d, operator new calls during the call\n\n",

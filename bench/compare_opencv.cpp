@@ -16,6 +16,7 @@
 #include "synthetic_scene.hpp"
 
 #include "bench_common.hpp"
+#include "bench_options.hpp"
 #include <opencv2/calib3d.hpp>
 #include <opencv2/essential.hpp>
 
@@ -52,27 +53,14 @@ struct Args
 Args parse(int argc, char** argv)
 {
     Args a;
-    for (int i = 1; i + 1 < argc; i += 2) {
-        const std::string k = argv[i], v = argv[i + 1];
-        if (k == "--n")
-            a.n = std::atoi(v.c_str());
-        else if (k == "--problems")
-            a.problems = std::atoi(v.c_str());
-        else if (k == "--solver")
-            a.solver = v;
-        else if (k == "--seed")
-            a.seed = std::strtoull(v.c_str(), nullptr, 10);
-        else if (k == "--opencv-methods")
-            a.opencvMethods = split(v);
-        else if (k == "--ratios") {
-            a.ratios.clear();
-            for (const auto& r : split(v))
-                a.ratios.push_back(std::atof(r.c_str()));
-        } else {
-            std::fprintf(stderr, "unknown option %s\n", k.c_str());
-            std::exit(2);
-        }
-    }
+    Options opts("essential_compare_opencv");
+    opts.add("n", a.n);
+    opts.add("problems", a.problems);
+    opts.add("solver", a.solver);
+    opts.add("seed", a.seed);
+    opts.add("opencv-methods", a.opencvMethods);
+    opts.add("ratios", a.ratios);
+    opts.parse(argc, argv);
     return a;
 }
 

@@ -19,6 +19,7 @@
 #include "synthetic_scene.hpp"
 
 #include "bench_common.hpp"
+#include "bench_options.hpp"
 #include "pose_accuracy.hpp"
 #include "poselib_runner.hpp"
 
@@ -49,31 +50,17 @@ struct Args
 Args parse(int argc, char** argv)
 {
     Args a;
-    for (int i = 1; i + 1 < argc; i += 2) {
-        const std::string k = argv[i], v = argv[i + 1];
-        if (k == "--n")
-            a.n = std::atoi(v.c_str());
-        else if (k == "--problems")
-            a.problems = std::atoi(v.c_str());
-        else if (k == "--max-iters")
-            a.maxIters = std::atoi(v.c_str());
-        else if (k == "--poselib-max-iters")
-            a.poselibMaxIters = std::atoi(v.c_str());
-        else if (k == "--camera")
-            a.camera = v;
-        else if (k == "--threshold")
-            a.threshold = std::atof(v.c_str());
-        else if (k == "--seed")
-            a.seed = std::strtoull(v.c_str(), nullptr, 10);
-        else if (k == "--csv")
-            a.csv = v;
-        else if (k == "--ratios")
-            a.ratios = numbers(v);
-        else {
-            std::fprintf(stderr, "unknown option %s\n", k.c_str());
-            std::exit(2);
-        }
-    }
+    Options opts("essential_compare_poselib");
+    opts.add("n", a.n);
+    opts.add("problems", a.problems);
+    opts.add("max-iters", a.maxIters);
+    opts.add("poselib-max-iters", a.poselibMaxIters);
+    opts.add("camera", a.camera);
+    opts.add("threshold", a.threshold);
+    opts.add("seed", a.seed);
+    opts.add("csv", a.csv);
+    opts.add("ratios", a.ratios);
+    opts.parse(argc, argv);
     if (a.camera != "paper" && a.camera != "wide") {
         std::fprintf(stderr, "--camera must be paper or wide\n");
         std::exit(2);

@@ -16,6 +16,7 @@
 // is estimated --aloe-runs times, the matches shuffled differently each time.
 
 #include "bench_common.hpp"
+#include "bench_options.hpp"
 #include "pose_accuracy.hpp"
 #include "poselib_runner.hpp"
 
@@ -50,29 +51,18 @@ struct Args
 Args parse(int argc, char** argv)
 {
     Args a;
-    for (int i = 1; i + 1 < argc; i += 2) {
-        const std::string k = argv[i], v = argv[i + 1];
-        if (k == "--rail")
-            a.rail = v;
-        else if (k == "--aloe")
-            a.aloe = v;
-        else if (k == "--offsets")
-            a.offsets = numbers(v);
-        else if (k == "--frames-step")
-            a.framesStep = std::max(1, std::atoi(v.c_str()));
-        else if (k == "--aloe-runs")
-            a.aloeRuns = std::max(1, std::atoi(v.c_str()));
-        else if (k == "--threshold")
-            a.threshold = std::atof(v.c_str());
-        else if (k == "--max-iters")
-            a.maxIters = std::atoi(v.c_str());
-        else if (k == "--poselib-max-iters")
-            a.poselibMaxIters = std::atoi(v.c_str());
-        else {
-            std::fprintf(stderr, "unknown option %s\n", k.c_str());
-            std::exit(2);
-        }
-    }
+    Options opts("essential_compare_poselib_real");
+    opts.add("rail", a.rail);
+    opts.add("aloe", a.aloe);
+    opts.add("offsets", a.offsets);
+    opts.add("threshold", a.threshold);
+    opts.add("max-iters", a.maxIters);
+    opts.add("poselib-max-iters", a.poselibMaxIters);
+    opts.add("frames-step", a.framesStep);
+    opts.add("aloe-runs", a.aloeRuns);
+    opts.parse(argc, argv);
+    a.framesStep = std::max(1, a.framesStep);
+    a.aloeRuns = std::max(1, a.aloeRuns);
     if (a.rail.empty() && a.aloe.empty()) {
         std::fprintf(stderr, "give --rail DIR and/or --aloe DIR\n");
         std::exit(2);

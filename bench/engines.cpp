@@ -25,6 +25,7 @@
 #include "synthetic_scene.hpp"
 
 #include "bench_common.hpp"
+#include "bench_options.hpp"
 #include <opencv2/essential.hpp>
 
 #include <algorithm>
@@ -132,40 +133,24 @@ int main(int argc, char** argv)
     std::vector<double> loIters = {0, 5, 10};
     int loDefault = cv::essential::EssentialParams().loIterations;
     Criterion criterion;
-    for (int i = 1; i + 1 < argc; i += 2) {
-        const std::string k = argv[i], v = argv[i + 1];
-        if (k == "--n")
-            n = std::atoi(v.c_str());
-        else if (k == "--problems")
-            problems = std::atoi(v.c_str());
-        else if (k == "--ratios")
-            ratios = numbers(v);
-        else if (k == "--hypotheses")
-            hyps = numbers(v);
-        else if (k == "--blocks")
-            blocks = numbers(v);
-        else if (k == "--budgets-ms")
-            budgets = numbers(v);
-        else if (k == "--solvers")
-            solvers = split(v);
-        else if (k == "--part")
-            part = v;
-        else if (k == "--lo")
-            loIters = numbers(v);
-        else if (k == "--lo-default")
-            loDefault = std::atoi(v.c_str());
-        else if (k == "--reliable-deg") {
-            const std::vector<double> deg = numbers(v);
-            if (deg.size() != 2) {
-                std::fprintf(stderr, "--reliable-deg takes ROTATION,TRANSLATION\n");
-                return 2;
-            }
-            criterion = {deg[0], deg[1]};
-        } else {
-            std::fprintf(stderr, "unknown option %s\n", k.c_str());
-            return 2;
-        }
-    }
+    Options opts("essential_engines");
+    opts.add("n", n);
+    opts.add("problems", problems);
+    opts.add("ratios", ratios);
+    opts.add("hypotheses", hyps);
+    opts.add("blocks", blocks);
+    opts.add("budgets-ms", budgets);
+    opts.add("solvers", solvers);
+    opts.add("part", part);
+    opts.add("lo", loIters);
+    opts.add("lo-default", loDefault);
+    opts.custom("reliable-deg", "3,6", [&](const std::string& v) {
+        const std::vector<double> deg = numbers(v);
+        if (deg.size() != 2)
+            essential_samples::fail("--reliable-deg takes ROTATION,TRANSLATION", 2);
+        criterion = {deg[0], deg[1]};
+    });
+    opts.parse(argc, argv);
     std::printf("Reliable: rotation error < %g deg and translation direction error < %g deg.\n",
                 criterion.rotDeg, criterion.transDeg);
     for (double ratio : ratios) {

@@ -16,6 +16,7 @@
 #include "frontend/sequence_io.hpp"
 
 #include "bench_common.hpp"
+#include "bench_options.hpp"
 
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
@@ -54,27 +55,15 @@ int main(int argc, char** argv)
     std::vector<std::string> descriptors = {"brief", "orb", "patch"};
     int pairs = 4;
     double threshold = 1.0;
-    for (int i = 1; i + 1 < argc; i += 2) {
-        const std::string k = argv[i], v = argv[i + 1];
-        if (k == "--data")
-            data = v;
-        else if (k == "--sequences")
-            sequences = split(v);
-        else if (k == "--descriptors")
-            descriptors = split(v);
-        else if (k == "--pairs")
-            pairs = std::max(1, std::atoi(v.c_str()));
-        else if (k == "--threshold")
-            threshold = std::atof(v.c_str());
-        else if (k == "--offsets") {
-            offsets.clear();
-            for (const auto& o : split(v))
-                offsets.push_back(std::atoi(o.c_str()));
-        } else {
-            std::fprintf(stderr, "unknown option %s\n", k.c_str());
-            return 2;
-        }
-    }
+    essential_bench::Options opts("essential_frontend_descriptors");
+    opts.add("data", data);
+    opts.add("sequences", sequences);
+    opts.add("descriptors", descriptors);
+    opts.add("threshold", threshold);
+    opts.add("pairs", pairs);
+    opts.add("offsets", offsets);
+    opts.parse(argc, argv);
+    pairs = std::max(1, pairs);
     if (data.empty()) {
         std::fprintf(stderr, "usage: essential_frontend_descriptors --data DIR [options] (see the "
                              "source)\n");

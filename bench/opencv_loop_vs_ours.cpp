@@ -18,6 +18,7 @@
 #include "synthetic_scene.hpp"
 
 #include "bench_common.hpp"
+#include "bench_options.hpp"
 #include <opencv2/essential.hpp>
 
 #include <algorithm>
@@ -45,32 +46,18 @@ struct Args
 Args parse(int argc, char** argv)
 {
     Args a;
-    for (int i = 1; i < argc; i += 2) {
-        const std::string k = argv[i];
-        if (i + 1 >= argc) {
-            std::fprintf(stderr, "option %s needs a value\n", k.c_str());
-            std::exit(2);
-        }
-        const std::string v = argv[i + 1];
-        if (k == "--n")
-            a.n = std::atoi(v.c_str());
-        else if (k == "--problems")
-            a.problems = std::atoi(v.c_str());
-        else if (k == "--solvers")
-            a.solvers = split(v);
-        else if (k == "--seed")
-            a.seed = std::strtoull(v.c_str(), nullptr, 10);
-        else if (k == "--method" && (v == "RANSAC" || v == "LMEDS"))
-            a.method = v == "RANSAC" ? cv::RANSAC : cv::LMEDS;
-        else if (k == "--ratios") {
-            a.ratios.clear();
-            for (const auto& r : split(v))
-                a.ratios.push_back(std::atof(r.c_str()));
-        } else {
-            std::fprintf(stderr, "unknown option or value: %s %s\n", k.c_str(), v.c_str());
-            std::exit(2);
-        }
-    }
+    Options opts("essential_opencv_loop_vs_ours");
+    opts.add("n", a.n);
+    opts.add("problems", a.problems);
+    opts.add("solvers", a.solvers);
+    opts.add("seed", a.seed);
+    opts.custom("method", "RANSAC", [&](const std::string& v) {
+        if (v != "RANSAC" && v != "LMEDS")
+            essential_samples::fail("--method is RANSAC or LMEDS", 2);
+        a.method = v == "RANSAC" ? cv::RANSAC : cv::LMEDS;
+    });
+    opts.add("ratios", a.ratios);
+    opts.parse(argc, argv);
     if (a.n < 6 || a.problems < 1 || a.ratios.empty() || a.solvers.empty()) {
         std::fprintf(stderr, "need --n >= 6, --problems >= 1, a ratio and a solver\n");
         std::exit(2);

@@ -9,6 +9,7 @@
 //   essential_opencv_time_model [--reps 3] [--sizes 100,250,500,1000,2000,4000,8000]
 
 #include "bench_common.hpp"
+#include "bench_options.hpp"
 #include "synthetic_scene.hpp"
 
 #include <opencv2/calib3d.hpp>
@@ -23,16 +24,10 @@ int main(int argc, char** argv)
 {
     int reps = 3;
     std::vector<double> sizes = {100, 250, 500, 1000, 2000, 4000, 8000};
-    for (int i = 1; i + 1 < argc; i += 2) {
-        if (!std::strcmp(argv[i], "--reps"))
-            reps = std::atoi(argv[i + 1]);
-        else if (!std::strcmp(argv[i], "--sizes"))
-            sizes = essential_bench::numbers(argv[i + 1]);
-        else {
-            std::fprintf(stderr, "unknown option %s\n", argv[i]);
-            return 2;
-        }
-    }
+    essential_bench::Options opts("essential_opencv_time_model");
+    opts.add("reps", reps);
+    opts.add("sizes", sizes);
+    opts.parse(argc, argv);
     std::printf("| N | OpenCV us / iteration | module us / sample | ratio |\n|---|---|---|---|\n");
     for (double size : sizes) {
         const int n = static_cast<int>(size);

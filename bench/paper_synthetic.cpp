@@ -42,6 +42,7 @@
 #include "synthetic_scene.hpp"
 
 #include "bench_common.hpp"
+#include "bench_options.hpp"
 #include <opencv2/calib3d.hpp>
 #include <opencv2/essential.hpp>
 
@@ -107,63 +108,34 @@ struct Args
 Args parse(int argc, char** argv)
 {
     Args a;
-    for (int i = 1; i < argc; ++i) {
-        const std::string k = argv[i];
-        if (k == "--quick") {
-            a.quick = true;
-            continue;
-        }
-        if (i + 1 >= argc) usage("missing value for " + k);
-        const std::string v = argv[++i];
-        if (k == "--part")
-            a.part = v;
-        else if (k == "--out")
-            a.out = v;
-        else if (k == "--problems")
-            a.problems = std::atoi(v.c_str());
-        else if (k == "--threads")
-            a.threads = std::max(1, std::atoi(v.c_str()));
-        else if (k == "--seed")
-            a.seed = std::strtoull(v.c_str(), nullptr, 10);
-        else if (k == "--rms-threshold")
-            a.rmsThreshold = std::atof(v.c_str());
-        else if (k == "--solvers")
-            a.solvers = v.empty() ? std::vector<std::string>() : split(v);
-        else if (k == "--opencv")
-            a.opencv = v.empty() ? std::vector<std::string>() : split(v);
-        else if (k == "--ours-default")
-            a.oursDefault = std::atoi(v.c_str()) != 0;
-        else if (k == "--n")
-            a.ns = numbers(v);
-        else if (k == "--ratios")
-            a.ratios = numbers(v);
-        else if (k == "--blocks")
-            a.blocks = numbers(v);
-        else if (k == "--max-ms")
-            a.maxMs = std::atof(v.c_str());
-        else if (k == "--max-knob")
-            a.maxKnob = std::atof(v.c_str());
-        else if (k == "--min-inliers")
-            a.minInliers = std::atoi(v.c_str());
-        else if (k == "--hard-solvers")
-            a.hardSolvers = split(v);
-        else if (k == "--hard-ratios")
-            a.hardRatios = numbers(v);
-        else if (k == "--hard-n")
-            a.hardN = std::atoi(v.c_str());
-        else if (k == "--hard-problems")
-            a.hardProblems = std::atoi(v.c_str());
-        else if (k == "--hard-max-ms")
-            a.hardMaxMs = std::atof(v.c_str());
-        else if (k == "--b60-solvers")
-            a.b60Solvers = split(v);
-        else if (k == "--b60-blocks")
-            a.b60Blocks = numbers(v);
-        else if (k == "--b60-problems")
-            a.b60Problems = std::atoi(v.c_str());
-        else
-            usage("unknown option " + k);
-    }
+    Options opts("essential_paper_synthetic");
+    opts.flag("quick", a.quick);
+    opts.add("part", a.part);
+    opts.add("out", a.out);
+    opts.add("problems", a.problems);
+    opts.add("threads", a.threads);
+    opts.add("seed", a.seed);
+    opts.add("rms-threshold", a.rmsThreshold);
+    opts.add("solvers", a.solvers);
+    opts.add("opencv", a.opencv);
+    opts.custom("ours-default", a.oursDefault ? "1" : "0",
+                [&](const std::string& v) { a.oursDefault = std::atoi(v.c_str()) != 0; });
+    opts.add("n", a.ns);
+    opts.add("ratios", a.ratios);
+    opts.add("blocks", a.blocks);
+    opts.add("max-ms", a.maxMs);
+    opts.add("max-knob", a.maxKnob);
+    opts.add("min-inliers", a.minInliers);
+    opts.add("hard-solvers", a.hardSolvers);
+    opts.add("hard-ratios", a.hardRatios);
+    opts.add("hard-n", a.hardN);
+    opts.add("hard-problems", a.hardProblems);
+    opts.add("hard-max-ms", a.hardMaxMs);
+    opts.add("b60-solvers", a.b60Solvers);
+    opts.add("b60-blocks", a.b60Blocks);
+    opts.add("b60-problems", a.b60Problems);
+    opts.parse(argc, argv);
+    a.threads = std::max(1, a.threads);
     if (a.part != "A" && a.part != "B" && a.part != "all" && a.part != "rms")
         usage("--part must be A, B, rms or all");
     if (a.problems < 1 || a.rmsThreshold <= 0) usage("--problems and --rms-threshold must be > 0");

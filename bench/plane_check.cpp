@@ -9,6 +9,7 @@
 //   essential_plane_check [--problems 30] [--ratios 0.10,0.15,0.25] [--plane-fraction 0.8]
 
 #include "bench_common.hpp"
+#include "bench_options.hpp"
 #include "degeneracy/plane_parallax.hpp"
 #include "hard_scenes.hpp"
 #include "input/problem.hpp"
@@ -45,18 +46,11 @@ int main(int argc, char** argv)
     int problems = 30;
     std::vector<double> ratios = {0.10, 0.15, 0.25};
     double planeFraction = 0.8;
-    for (int i = 1; i + 1 < argc; i += 2) {
-        if (!std::strcmp(argv[i], "--problems"))
-            problems = std::atoi(argv[i + 1]);
-        else if (!std::strcmp(argv[i], "--ratios"))
-            ratios = essential_bench::numbers(argv[i + 1]);
-        else if (!std::strcmp(argv[i], "--plane-fraction"))
-            planeFraction = std::atof(argv[i + 1]);
-        else {
-            std::fprintf(stderr, "unknown option %s\n", argv[i]);
-            return 2;
-        }
-    }
+    essential_bench::Options opts("essential_plane_check");
+    opts.add("problems", problems);
+    opts.add("ratios", ratios);
+    opts.add("plane-fraction", planeFraction);
+    opts.parse(argc, argv);
     std::printf(
         "| inliers | scenes | planes found | replaced | fix (wrong -> right) | harm (right -> "
         "wrong) | right before | right after |\n|---|---|---|---|---|---|---|---|\n");

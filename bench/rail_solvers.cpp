@@ -17,6 +17,7 @@
 #include "frontend/sequence_io.hpp"
 
 #include "bench_common.hpp"
+#include "bench_options.hpp"
 #include <opencv2/essential.hpp>
 #include <opencv2/imgcodecs.hpp>
 
@@ -59,31 +60,16 @@ int main(int argc, char** argv)
     std::vector<std::string> solvers = {"gn", "lm", "nister", "robust"};
     int pairs = 8, maxIters = 1000, repeats = 3;
     double budgetMs = 0;
-    for (int i = 1; i + 1 < argc; i += 2) {
-        const std::string k = argv[i], v = argv[i + 1];
-        if (k == "--data")
-            data = v;
-        else if (k == "--sequences")
-            sequences = split(v);
-        else if (k == "--solvers")
-            solvers = split(v);
-        else if (k == "--pairs")
-            pairs = std::atoi(v.c_str());
-        else if (k == "--max-iters")
-            maxIters = std::atoi(v.c_str());
-        else if (k == "--repeats")
-            repeats = std::atoi(v.c_str());
-        else if (k == "--budget-ms")
-            budgetMs = std::atof(v.c_str());
-        else if (k == "--offsets") {
-            offsets.clear();
-            for (const auto& o : split(v))
-                offsets.push_back(std::atoi(o.c_str()));
-        } else {
-            std::fprintf(stderr, "unknown option %s\n", k.c_str());
-            return 2;
-        }
-    }
+    Options opts("essential_rail_solvers");
+    opts.add("data", data);
+    opts.add("sequences", sequences);
+    opts.add("solvers", solvers);
+    opts.add("pairs", pairs);
+    opts.add("max-iters", maxIters);
+    opts.add("repeats", repeats);
+    opts.add("budget-ms", budgetMs);
+    opts.add("offsets", offsets);
+    opts.parse(argc, argv);
     if (data.empty()) {
         std::fprintf(stderr,
                      "usage: essential_rail_solvers --data DIR [options] (see the source)\n");

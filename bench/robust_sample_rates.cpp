@@ -16,6 +16,7 @@
 #include "synthetic_scene.hpp"
 
 #include "bench_common.hpp"
+#include "bench_options.hpp"
 #include <opencv2/essential.hpp>
 
 #include <cstdio>
@@ -29,19 +30,11 @@ int main(int argc, char** argv)
     int samples = 1000;
     uint64_t seed = 1;
     std::vector<double> focals = {500.0};
-    for (int i = 1; i + 1 < argc; i += 2) {
-        const std::string k = argv[i], v = argv[i + 1];
-        if (k == "--samples")
-            samples = std::atoi(v.c_str());
-        else if (k == "--focals")
-            focals = essential_bench::numbers(v);
-        else if (k == "--seed")
-            seed = std::strtoull(v.c_str(), nullptr, 10);
-        else {
-            std::fprintf(stderr, "unknown option %s\n", k.c_str());
-            return 2;
-        }
-    }
+    essential_bench::Options opts("essential_robust_sample_rates");
+    opts.add("samples", samples);
+    opts.add("focals", focals);
+    opts.add("seed", seed);
+    opts.parse(argc, argv);
     std::printf("%d samples per row; noise 0.5 px, threshold 1 px; correct = within 0.05 of the "
                 "true E\n\n",
                 samples);

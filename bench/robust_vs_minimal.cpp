@@ -14,6 +14,7 @@
 #include "synthetic_scene.hpp"
 
 #include "bench_common.hpp"
+#include "bench_options.hpp"
 #include <opencv2/essential.hpp>
 
 #include <algorithm>
@@ -62,26 +63,14 @@ int main(int argc, char** argv)
     uint64_t seed = 1;
     std::vector<double> ratios = {0.1, 0.05}, budgets = {10, 100, 1000};
     std::vector<std::string> solvers = {"gn", "lm", "nister", "robust"};
-    for (int i = 1; i + 1 < argc; i += 2) {
-        const std::string k = argv[i], v = argv[i + 1];
-        if (k == "--n")
-            n = std::atoi(v.c_str());
-        else if (k == "--problems")
-            problems = std::atoi(v.c_str());
-        else if (k == "--seed")
-            seed = std::strtoull(v.c_str(), nullptr, 10);
-        else if (k == "--solvers")
-            solvers = split(v);
-        else if (k == "--ratios" || k == "--budgets-ms") {
-            std::vector<double>& dst = k == "--ratios" ? ratios : budgets;
-            dst.clear();
-            for (const auto& x : split(v))
-                dst.push_back(std::atof(x.c_str()));
-        } else {
-            std::fprintf(stderr, "unknown option %s\n", k.c_str());
-            return 2;
-        }
-    }
+    Options opts("essential_robust_vs_minimal");
+    opts.add("n", n);
+    opts.add("problems", problems);
+    opts.add("seed", seed);
+    opts.add("solvers", solvers);
+    opts.add("ratios", ratios);
+    opts.add("budgets-ms", budgets);
+    opts.parse(argc, argv);
     std::printf(
         "N = %d, %d problems per cell; reliable = rotation < 2 deg and translation < 5 deg\n\n", n,
         problems);

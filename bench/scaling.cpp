@@ -11,6 +11,7 @@
 // Public API only.
 
 #include "bench_common.hpp"
+#include "bench_options.hpp"
 #include "synthetic_scene.hpp"
 
 #include <opencv2/essential.hpp>
@@ -78,15 +79,12 @@ int main(int argc, char** argv)
     std::vector<double> sizes = {1000, 10000, 100000};
     double inliers = 0.5;
     int repeats = 5;
-    for (int i = 1; i + 1 < argc; i += 2) {
-        const std::string arg = argv[i];
-        if (arg == "--sizes")
-            sizes = essential_bench::numbers(argv[i + 1]);
-        else if (arg == "--inliers")
-            inliers = std::atof(argv[i + 1]);
-        else if (arg == "--repeats")
-            repeats = std::max(1, std::atoi(argv[i + 1]));
-    }
+    essential_bench::Options opts("essential_scaling");
+    opts.add("sizes", sizes);
+    opts.add("inliers", inliers);
+    opts.add("repeats", repeats);
+    opts.parse(argc, argv);
+    repeats = std::max(1, repeats);
     std::printf("| N | inliers found | median time | min time | time / N | peak RSS | RSS of scene "
                 "only | estimate's share | share / N |\n");
     std::printf("|---|---|---|---|---|---|---|---|---|\n");

@@ -23,6 +23,7 @@
 // Links the internal headers (opencv_essential_internal) to build the variants.
 
 #include "bench_common.hpp"
+#include "bench_options.hpp"
 #include "converging_scene.hpp"
 #include "solvers/gauss_newton.hpp"
 #include "solvers/levenberg_marquardt.hpp"
@@ -90,25 +91,14 @@ int main(int argc, char** argv)
     int gnExtraStarts = -1;
     double gnDivergence = -1.0;
     int gnMaxIterations = -1;
-    for (int i = 1; i + 1 < argc; i += 2) {
-        const std::string k = argv[i], v = argv[i + 1];
-        if (k == "--problems")
-            problems = std::atoi(v.c_str());
-        else if (k == "--noise")
-            noise = std::atof(v.c_str());
-        else if (k == "--seed")
-            seed = std::strtoull(v.c_str(), nullptr, 10);
-        else if (k == "--gn-extra-starts")
-            gnExtraStarts = std::atoi(v.c_str());
-        else if (k == "--gn-divergence")
-            gnDivergence = std::atof(v.c_str());
-        else if (k == "--gn-max-iterations")
-            gnMaxIterations = std::atoi(v.c_str());
-        else {
-            std::fprintf(stderr, "unknown option %s\n", k.c_str());
-            return 2;
-        }
-    }
+    essential_bench::Options opts("essential_solver_hit_rates");
+    opts.add("problems", problems);
+    opts.add("noise", noise);
+    opts.add("seed", seed);
+    opts.add("gn-extra-starts", gnExtraStarts);
+    opts.add("gn-divergence", gnDivergence);
+    opts.add("gn-max-iterations", gnMaxIterations);
+    opts.parse(argc, argv);
     using namespace cv::essential;
     // R = I only: as the solvers are in a mix with a direct solver (IdentityStartOnly), and, for
     // gn, as it was before the start sequence (the cheirality filter changes no rate).

@@ -15,6 +15,7 @@
 #include "converging_scene.hpp"
 
 #include "bench_common.hpp"
+#include "bench_options.hpp"
 #include <opencv2/essential.hpp>
 
 #include <chrono>
@@ -32,27 +33,15 @@ int main(int argc, char** argv)
     double minDeg = 45, maxDeg = 90;
     std::vector<double> ratios = {0.5, 0.3};
     std::vector<std::string> solvers = {"gn", "lm", "gn+nister", "nister"};
-    for (int i = 1; i + 1 < argc; i += 2) {
-        const std::string k = argv[i], v = argv[i + 1];
-        if (k == "--problems")
-            problems = std::atoi(v.c_str());
-        else if (k == "--n")
-            n = std::atoi(v.c_str());
-        else if (k == "--seed")
-            seed = std::strtoull(v.c_str(), nullptr, 10);
-        else if (k == "--ratios")
-            ratios = numbers(v);
-        else if (k == "--solvers")
-            solvers = split(v);
-        else if (k == "--min-deg")
-            minDeg = std::atof(v.c_str());
-        else if (k == "--max-deg")
-            maxDeg = std::atof(v.c_str());
-        else {
-            std::fprintf(stderr, "unknown option %s\n", k.c_str());
-            return 2;
-        }
-    }
+    Options opts("essential_wide_rotation_reliability");
+    opts.add("problems", problems);
+    opts.add("n", n);
+    opts.add("seed", seed);
+    opts.add("ratios", ratios);
+    opts.add("solvers", solvers);
+    opts.add("min-deg", minDeg);
+    opts.add("max-deg", maxDeg);
+    opts.parse(argc, argv);
     std::printf(
         "converging scenes, rotation %.0f-%.0f deg, N = %d, %d problems per row; reliable = "
         "rotation < 2 deg and translation < 5 deg\n\n",

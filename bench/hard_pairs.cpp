@@ -12,6 +12,7 @@
 //   essential_hard_pairs [--sets LIST] [--methods LIST] [--csv FILE] [--md FILE] ...  (kUsage)
 
 #include "bench_common.hpp"
+#include "bench_options.hpp"
 #include "cli_common.hpp"
 #include "frontend/frontend.hpp"
 #include "frontend/sequence_io.hpp"
@@ -43,8 +44,6 @@
 namespace {
 
 using essential_samples::fail;
-using essential_samples::isOption;
-using essential_samples::optionValue;
 using essential_samples::parseDouble;
 using essential_samples::parseInt;
 using essential_samples::split;
@@ -526,61 +525,49 @@ Options parseOptions(int argc, char** argv)
     o.commandLine = "essential_hard_pairs";
     for (int i = 1; i < argc; ++i)
         o.commandLine += std::string(" ") + argv[i];
-    for (int i = 1; i < argc; ++i) {
-        std::string arg = argv[i];
-        if (arg == "-h" || arg == "--help") {
-            std::fputs(kUsage, stdout);
-            std::exit(0);
+    essential_bench::Options opts("essential_hard_pairs", kUsage);
+    long long integer = 0;
+    auto positive = [&](const char* name, int& field, long long max) {
+        opts.custom(name, std::to_string(field),
+                    [&field, &integer, name, max](const std::string& v) {
+                        if (!parseInt(v, integer) || integer < 1 || integer > max)
+                            fail(std::string("--") + name + " must be an integer in [1, " +
+                                     std::to_string(max) + "]",
+                                 2);
+                        field = static_cast<int>(integer);
+                    });
+    };
+    opts.add("sets", o.sets);
+    opts.add("methods", methods);
+    opts.custom("ratios", "", [&](const std::string& value) {
+        o.ratios.clear();
+        for (const std::string& part : split(value, ',')) {
+            double r = 0;
+            if (!parseDouble(part, r) || !(r > 0) || r > 1)
+                fail("--ratios: '" + part + "' is not an inlier ratio in (0, 1]", 2);
+            o.ratios.push_back(r);
         }
-        if (!isOption(arg)) fail("unexpected argument '" + arg + "' (see --help)", 2);
-        const std::string value = optionValue(arg, i, argc, argv);
-        long long integer = 0;
-        auto positive = [&](int& field, long long max) {
-            if (!parseInt(value, integer) || integer < 1 || integer > max)
-                fail(arg + " must be an integer in [1, " + std::to_string(max) + "]", 2);
-            field = static_cast<int>(integer);
-        };
-        if (arg == "--sets") {
-            o.sets = split(value, ',');
-        } else if (arg == "--methods") {
-            methods = value;
-        } else if (arg == "--ratios") {
-            o.ratios.clear();
-            for (const std::string& part : split(value, ',')) {
-                double r = 0;
-                if (!parseDouble(part, r) || !(r > 0) || r > 1)
-                    fail("--ratios: '" + part + "' is not an inlier ratio in (0, 1]", 2);
-                o.ratios.push_back(r);
-            }
-        } else if (arg == "--offsets") {
-            o.offsets.clear();
-            for (const std::string& part : split(value, ',')) {
-                if (!parseInt(part, integer) || integer < 1 || integer > 100000)
-                    fail("--offsets: '" + part + "' is not a positive frame offset", 2);
-                o.offsets.push_back(static_cast<int>(integer));
-            }
-        } else if (arg == "--problems") {
-            positive(o.problems, 100000);
-        } else if (arg == "--points") {
-            positive(o.points, 10000000);
-        } else if (arg == "--shuffles") {
-            positive(o.shuffles, 100000);
-        } else if (arg == "--pairs-per-offset") {
-            positive(o.pairsPerOffset, 100000);
-        } else if (arg == "--data") {
-            o.data = value;
-        } else if (arg == "--cache") {
-            o.cache = value;
-        } else if (arg == "--csv") {
-            o.csv = value;
-        } else if (arg == "--md") {
-            o.md = value;
-        } else if (arg == "--seed") {
-            if (!essential_samples::parseSeed(value, o.seed)) fail("--seed must be >= 0", 2);
-        } else {
-            fail("unknown option '" + arg + "' (see --help)", 2);
+    });
+    opts.custom("offsets", "", [&](const std::string& value) {
+        o.offsets.clear();
+        for (const std::string& part : split(value, ',')) {
+            if (!parseInt(part, integer) || integer < 1 || integer > 100000)
+                fail("--offsets: '" + part + "' is not a positive frame offset", 2);
+            o.offsets.push_back(static_cast<int>(integer));
         }
-    }
+    });
+    positive("problems", o.problems, 100000);
+    positive("points", o.points, 10000000);
+    positive("shuffles", o.shuffles, 100000);
+    positive("pairs-per-offset", o.pairsPerOffset, 100000);
+    opts.add("data", o.data);
+    opts.add("cache", o.cache);
+    opts.add("csv", o.csv);
+    opts.add("md", o.md);
+    opts.custom("seed", "1", [&](const std::string& value) {
+        if (!essential_samples::parseSeed(value, o.seed)) fail("--seed must be >= 0", 2);
+    });
+    opts.parse(argc, argv);
     static const std::vector<std::string> known = {
         "synth-plane", "synth-repeated", "synth-clustered", "rail-random20", "rail-all",
         "aloe-orb20",  "aloe-orb30",     "synth-protocol",  "rail-best20"};

@@ -15,6 +15,7 @@
 //   essential_paper_rail --data DIR --csv OUT.csv [options]   (see kUsage)
 
 #include "bench_common.hpp"
+#include "bench_options.hpp"
 #include "cli_common.hpp"
 #include "frontend/frontend.hpp"
 #include "frontend/sequence_io.hpp"
@@ -45,8 +46,6 @@ using essential_bench::loadMatches;
 using essential_bench::saveMatches;
 using essential_samples::elapsedMs;
 using essential_samples::fail;
-using essential_samples::isOption;
-using essential_samples::optionValue;
 using essential_samples::parseDouble;
 using essential_samples::parseInt;
 using essential_samples::parseSolverList;
@@ -129,59 +128,49 @@ std::pair<bool, double> parseVariant(const std::string& name)
 Options parseOptions(int argc, char** argv)
 {
     Options o;
-    for (int i = 1; i < argc; ++i) {
-        std::string arg = argv[i];
-        if (arg == "-h" || arg == "--help") {
-            std::fputs(kUsage, stdout);
-            std::exit(0);
+    essential_bench::Options opts("essential_paper_rail", kUsage);
+    long long integer = 0;
+    bool noOpencv = false;
+    opts.flag("no-opencv", noOpencv);
+    opts.add("data", o.data);
+    opts.add("csv", o.csv);
+    opts.add("cache", o.cache);
+    opts.add("sequences", o.sequences);
+    opts.custom("offsets", "", [&](const std::string& value) { o.offsets = parseOffsets(value); });
+    opts.custom("pairs-per-offset", "", [&](const std::string& value) {
+        if (!parseInt(value, integer) || integer < 1 || integer > 100000)
+            fail("--pairs-per-offset must be a positive integer", 2);
+        o.pairsPerOffset = static_cast<int>(integer);
+    });
+    opts.custom("variants", "", [&](const std::string& value) {
+        o.variants = split(value, ',');
+        for (const std::string& v : o.variants)
+            parseVariant(v);
+    });
+    opts.custom("solvers", "",
+                [&](const std::string& value) { o.solvers = parseSolverList("--solvers", value); });
+    opts.custom("budgets-ms", "", [&](const std::string& value) {
+        o.budgets.clear();
+        for (const std::string& part : split(value, ',')) {
+            double b = 0;
+            if (!parseDouble(part, b) || !(b > 0))
+                fail("--budgets-ms: '" + part + "' is not a positive budget in ms", 2);
+            o.budgets.push_back(b);
         }
-        if (arg == "--no-opencv") {
-            o.opencv = false;
-            continue;
-        }
-        if (!isOption(arg)) fail("unexpected argument '" + arg + "' (see --help)", 2);
-        const std::string value = optionValue(arg, i, argc, argv);
-        long long integer = 0;
-        if (arg == "--data") {
-            o.data = value;
-        } else if (arg == "--csv") {
-            o.csv = value;
-        } else if (arg == "--cache") {
-            o.cache = value;
-        } else if (arg == "--sequences") {
-            o.sequences = split(value, ',');
-        } else if (arg == "--offsets") {
-            o.offsets = parseOffsets(value);
-        } else if (arg == "--pairs-per-offset") {
-            if (!parseInt(value, integer) || integer < 1 || integer > 100000)
-                fail("--pairs-per-offset must be a positive integer", 2);
-            o.pairsPerOffset = static_cast<int>(integer);
-        } else if (arg == "--variants") {
-            o.variants = split(value, ',');
-            for (const std::string& v : o.variants)
-                parseVariant(v);
-        } else if (arg == "--solvers") {
-            o.solvers = parseSolverList("--solvers", value);
-        } else if (arg == "--budgets-ms") {
-            o.budgets.clear();
-            for (const std::string& part : split(value, ',')) {
-                double b = 0;
-                if (!parseDouble(part, b) || !(b > 0))
-                    fail("--budgets-ms: '" + part + "' is not a positive budget in ms", 2);
-                o.budgets.push_back(b);
-            }
-        } else if (arg == "--threshold-deg") {
-            if (!parseDouble(value, o.thresholdDeg) || !(o.thresholdDeg > 0))
-                fail("--threshold-deg must be a positive angle", 2);
-        } else if (arg == "--threshold") {
-            if (!parseDouble(value, o.threshold) || !(o.threshold > 0))
-                fail("--threshold must be a positive number of pixels", 2);
-        } else if (arg == "--seed") {
-            if (!parseInt(value, o.seed) || o.seed < 0) fail("--seed must be >= 0", 2);
-        } else {
-            fail("unknown option '" + arg + "' (see --help)", 2);
-        }
-    }
+    });
+    opts.custom("threshold-deg", "", [&](const std::string& value) {
+        if (!parseDouble(value, o.thresholdDeg) || !(o.thresholdDeg > 0))
+            fail("--threshold-deg must be a positive angle", 2);
+    });
+    opts.custom("threshold", "", [&](const std::string& value) {
+        if (!parseDouble(value, o.threshold) || !(o.threshold > 0))
+            fail("--threshold must be a positive number of pixels", 2);
+    });
+    opts.custom("seed", "", [&](const std::string& value) {
+        if (!parseInt(value, o.seed) || o.seed < 0) fail("--seed must be >= 0", 2);
+    });
+    opts.parse(argc, argv);
+    if (noOpencv) o.opencv = false;
     if (o.data.empty() || o.csv.empty()) fail("--data and --csv are required (see --help)", 2);
     return o;
 }

@@ -14,6 +14,7 @@
 #include "scoring/msac_score.hpp"
 #include "search/minimal_set.hpp"
 #include "search/search.hpp"
+#include "solvers/iterative_minimal_solver.hpp"
 #include "termination/opencv_time_budget.hpp"
 #include "termination/termination.hpp"
 
@@ -120,6 +121,12 @@ Mat estimate(const Problem& problem, const EssentialParams& params, OutputArray 
         return stacked;
     }
 
+    // The preemptive engine draws a fixed number of hypotheses (or what a time budget buys) with no
+    // stopping rule: what counts is how many hypotheses the time buys, not the rate at wide
+    // rotations, so iterative solvers run there as they did before their start sequence: from
+    // R = I only, every root returned (docs/SOLVERS.md).
+    if (params.engine == ENGINE_PREEMPTIVE)
+        solvers::useIdentityStartOnlyIfIterative(*solver, /*keepCheirality=*/false);
     const int64 tSearch = getTickCount();
     ransac::SearchSettings settings;
     settings.confidence = params.confidence;

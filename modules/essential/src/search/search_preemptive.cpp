@@ -4,7 +4,6 @@
 #include "sampling/sample_buffer.hpp"
 #include "scoring/msac_score.hpp"
 #include "search/search.hpp"
-#include "solvers/iterative_minimal_solver.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -50,11 +49,6 @@ SearchResult searchPreemptive(const Problem& problem, EssentialSolver& solver, R
 {
     SearchResult result = beginSearch(problem, solver, settings);
     const int n = problem.size();
-    // A fixed number of hypotheses (or a time budget) and no stopping rule: what counts is how many
-    // hypotheses the time buys, not the rate at wide rotations, so iterative solvers run as they
-    // did before their start sequence: from R = I only, every root returned (docs/SOLVERS.md).
-    if (auto* iterative = dynamic_cast<solvers::IdentityStartOnly*>(&solver))
-        iterative->useIdentityStartOnly(false);
     SampleBuffer buffer(solver, settings.sampleCheirality);
     if (n < buffer.sampleSize) return result;
     const int B = std::max(1, settings.preemptiveBlockSize);

@@ -44,6 +44,16 @@ public:
     virtual void useIdentityStartOnly(bool keepCheirality = true) = 0;
 };
 
+/** IdentityStartOnly::useIdentityStartOnly for `solver` when it has that setting (an iterative
+solver, or a composite holding one); any other solver, a user's included, is left as it is. For the
+caller that creates the solver for an engine (pipeline/estimate.cpp), so that the engine itself
+never changes the solver it is given. */
+inline void useIdentityStartOnlyIfIterative(EssentialSolver& solver, bool keepCheirality)
+{
+    if (auto* iterative = dynamic_cast<IdentityStartOnly*>(&solver))
+        iterative->useIdentityStartOnly(keepCheirality);
+}
+
 template <class Settings>
 class IterativeMinimalSolver : public EssentialSolver, public IdentityStartOnly
 {

@@ -238,18 +238,10 @@ PlaneParallaxResult checkPlaneAndParallax(const Problem& problem, const Matx33d&
     looseOff.threshold = looseThreshold;
     double bestCost = score.cost;
     std::vector<uchar> near(static_cast<size_t>(n));
-    std::vector<Point2d> s1, s2;
     auto polishAndCompare = [&](const Matx33d& candidate) {
-        inlierMask(candidate, problem, looseThreshold, near.data());
-        s1.clear();
-        s2.clear();
-        for (int i = 0; i < n; ++i)
-            if (near[static_cast<size_t>(i)]) {
-                s1.push_back(problem.p1[i]);
-                s2.push_back(problem.p2[i]);
-            }
-        if (s1.size() < 5) return;
-        const Problem subset = makeProblem(s1, s2, problem.threshold, problem.distance);
+        if (inlierMask(candidate, problem, looseThreshold, near.data()) < 5) return;
+        const Problem subset =
+            maskedProblem(problem, near.data(), problem.threshold, problem.distance);
         refine::IrlsSettings irls;
         irls.maxIterations = kPolishIterations;
         const refine::IrlsResult polished =

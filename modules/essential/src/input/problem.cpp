@@ -119,6 +119,29 @@ Problem makeProblem(std::vector<Point2d> n1, std::vector<Point2d> n2, double thr
     return p;
 }
 
+Problem subsetProblem(const Problem& problem, const int* indices, int count, double threshold,
+                      EssentialDistance distance)
+{
+    std::vector<Point2d> a(static_cast<size_t>(count)), b(static_cast<size_t>(count));
+    for (int i = 0; i < count; ++i) {
+        a[static_cast<size_t>(i)] = problem.p1[static_cast<size_t>(indices[i])];
+        b[static_cast<size_t>(i)] = problem.p2[static_cast<size_t>(indices[i])];
+    }
+    return makeProblem(std::move(a), std::move(b), threshold, distance);
+}
+
+Problem maskedProblem(const Problem& problem, const uchar* mask, double threshold,
+                      EssentialDistance distance)
+{
+    std::vector<Point2d> a, b;
+    for (int i = 0; i < problem.size(); ++i)
+        if (mask[i]) {
+            a.push_back(problem.p1[static_cast<size_t>(i)]);
+            b.push_back(problem.p2[static_cast<size_t>(i)]);
+        }
+    return makeProblem(std::move(a), std::move(b), threshold, distance);
+}
+
 void checkConfidence(double prob)
 {
     if (!(prob > 0.0 && prob < 1.0))

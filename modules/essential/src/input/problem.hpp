@@ -62,6 +62,15 @@ given inlier distance. */
 Problem makeProblem(std::vector<Point2d> n1, std::vector<Point2d> n2, double threshold,
                     EssentialDistance distance = DISTANCE_SAMPSON);
 
+/** The points `indices[0..count)` of `problem`, in that order, as a problem with the given inlier
+test: what a refinement on the points near a model fits. */
+Problem subsetProblem(const Problem& problem, const int* indices, int count, double threshold,
+                      EssentialDistance distance);
+
+/** The same for the points whose `mask` entry is non-zero, in their order. */
+Problem maskedProblem(const Problem& problem, const uchar* mask, double threshold,
+                      EssentialDistance distance);
+
 /** Argument checks shared by every overload; messages name the argument. */
 void checkConfidence(double prob);
 void checkThreshold(double threshold);

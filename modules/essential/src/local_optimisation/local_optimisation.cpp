@@ -127,13 +127,8 @@ void LocalOptimisation::polish(const Matx33d& start, RNG& rng, BestModel& best,
         k = settings_.sampleSize;
     }
     if (k < 5) return; // IRLS fits 5 degrees of freedom
-    std::vector<Point2d> a(static_cast<size_t>(k)), b(static_cast<size_t>(k));
-    for (int i = 0; i < k; ++i) {
-        a[i] = problem_.p1[chosen_[i]];
-        b[i] = problem_.p2[chosen_[i]];
-    }
     const Problem subset =
-        makeProblem(std::move(a), std::move(b), problem_.threshold, problem_.distance);
+        subsetProblem(problem_, chosen_.data(), k, problem_.threshold, problem_.distance);
     refine::IrlsSettings irls;
     irls.maxIterations = settings_.iterations;
     ++counters.polishes;

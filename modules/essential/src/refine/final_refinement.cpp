@@ -54,7 +54,6 @@ FinalRefinementResult refineFinal(const Problem& problem, const Matx33d& E0, dou
         return sigma > 0.0 ? sigma : settings.assumedNoise * threshold;
     };
     std::vector<uchar> use(static_cast<size_t>(n)), inFront(static_cast<size_t>(n));
-    std::vector<Point2d> a, b;
     Matx33d E = E0;
     double sigma = noiseAt(E);
     for (int round = 0; round < settings.maxRounds; ++round) {
@@ -79,14 +78,7 @@ FinalRefinementResult refineFinal(const Problem& problem, const Matx33d& E0, dou
             }
         }
         if (count < kMinPoints) break;
-        a.clear();
-        b.clear();
-        for (int i = 0; i < n; ++i)
-            if (use[i]) {
-                a.push_back(problem.p1[i]);
-                b.push_back(problem.p2[i]);
-            }
-        const Problem selected = makeProblem(a, b, threshold);
+        const Problem selected = maskedProblem(problem, use.data(), threshold, DISTANCE_SAMPSON);
         const IrlsResult refined = refineIrls(selected, E, scale, irls);
         result.iterations += refined.iterations;
         result.pointsUsed = count;

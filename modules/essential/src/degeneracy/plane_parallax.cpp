@@ -199,12 +199,8 @@ PlaneParallaxResult checkPlaneAndParallax(const Problem& problem, const Matx33d&
     if (m < 2) return result;
 
     // The points off the plane as a problem of their own, to count a model's inliers among them.
-    std::vector<Point2d> o1, o2;
-    for (int i : offPlane) {
-        o1.push_back(problem.p1[i]);
-        o2.push_back(problem.p2[i]);
-    }
-    const Problem off = makeProblem(o1, o2, problem.threshold, problem.distance);
+    const Problem off =
+        subsetProblem(problem, offPlane.data(), m, problem.threshold, problem.distance);
     std::vector<uchar> offMask(static_cast<size_t>(m));
     auto offInliers = [&](const Matx33d& model) {
         return inlierMask(model, off, problem.threshold, offMask.data());

@@ -36,12 +36,7 @@ Problem shuffledCopy(const Problem& problem, RNG& rng)
     std::iota(order.begin(), order.end(), 0);
     for (int i = n - 1; i > 0; --i)
         std::swap(order[i], order[rng.uniform(0, i + 1)]);
-    std::vector<Point2d> p1(static_cast<size_t>(n)), p2(static_cast<size_t>(n));
-    for (int i = 0; i < n; ++i) {
-        p1[i] = problem.p1[order[i]];
-        p2[i] = problem.p2[order[i]];
-    }
-    return makeProblem(std::move(p1), std::move(p2), problem.threshold, problem.distance);
+    return subsetProblem(problem, order.data(), n, problem.threshold, problem.distance);
 }
 
 SearchResult searchPreemptive(const Problem& problem, EssentialSolver& solver, RNG& rng,

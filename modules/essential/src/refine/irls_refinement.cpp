@@ -6,9 +6,9 @@
 #include "geometry/essential_decomposition.hpp"
 #include "geometry/essential_parameterisation.hpp"
 #include "geometry/sampson.hpp"
+#include "optim/levenberg_marquardt.hpp"
+#include "optim/robust_loss.hpp"
 #include "simd_dispatch.hpp"
-
-#include <Eigen/Cholesky>
 
 #include <algorithm>
 #include <cmath>
@@ -23,40 +23,12 @@ using geometry::EssentialPose;
 using geometry::Matrix5d;
 using geometry::Vector5d;
 
-/** The logarithm is the costliest part of the Cauchy loss: the sum of log(1 + u_i) is taken as
-the log of the product of the (1 + u_i) over runs of points, one log per run. Each factor is at
-least 1 and the product is flushed before it exceeds this bound, so it never overflows (a single
-factor above the bound, a far outlier, is flushed on its own). */
-constexpr double kProductFlush = 1e150;
-
 /** Points per block of the normal equations' two-stage loop (a multiple of kLanes), small enough
 for the block's arrays to stay in L1. */
 constexpr int kBlock = 64;
 
 /** Interleaved partial sums per entry of A and g: 4 fills one AVX register or two SSE2 ones. */
 constexpr int kLanes = 4;
-
-/** Accumulates sum_i log(1 + u_i) with one log per run of factors (see kProductFlush). */
-struct LogSum
-{
-    double sum = 0.0;
-    double product = 1.0;
-
-    void add(double u)
-    {
-        const double factor = 1.0 + u;
-        if (product * factor > kProductFlush || !(factor < kProductFlush)) {
-            sum += std::log(product);
-            product = 1.0;
-            if (!(factor < kProductFlush)) {
-                sum += std::log1p(u);
-                return;
-            }
-        }
-        product *= factor;
-    }
-    double total() const { return sum + std::log(product); }
-};
 
 /** evaluate() for one loss (a compile-time choice, so that the per-point loop has no branch on
 it and stays vectorised), inlined into each AVX2 / default clone of its callers. */
@@ -65,7 +37,7 @@ it and stays vectorised), inlined into each AVX2 / default clone of its callers.
 #else
 #define ESSENTIAL_INLINE_INTO_CLONES inline
 #endif
-template <bool Tukey>
+template <class Loss>
 ESSENTIAL_INLINE_INTO_CLONES double evaluateLoss(const Problem& p, const EssentialPose& pose,
                                                  double sigma2, Matrix5d* A, Vector5d* g)
 {
@@ -76,22 +48,15 @@ ESSENTIAL_INLINE_INTO_CLONES double evaluateLoss(const Problem& p, const Essenti
     const double* x2 = p.x2.data();
     const double* y2 = p.y2.data();
     const double invSigma2 = 1.0 / sigma2;
-    LogSum logSum;         // Cauchy: sum of log(1 + u)
-    double tukeySum = 0.0; // Tukey: sum of 1 - (1 - u)^3, (1 - u) clamped at 0
+    typename Loss::Sum costSum;
     const geometry::EssentialEntries E(derivatives.E);
     if (!A) {
         for (int i = 0; i < n; ++i) {
             const geometry::SampsonTerms t = geometry::sampsonTerms(E, x1[i], y1[i], x2[i], y2[i]);
             if (!(t.D > 0.0)) continue;
-            const double u = geometry::sampsonSquared(t) * invSigma2;
-            if (Tukey) {
-                const double v = std::max(0.0, 1.0 - u);
-                tukeySum += 1.0 - v * v * v;
-            } else {
-                logSum.add(u);
-            }
+            costSum.add(geometry::sampsonSquared(t) * invSigma2);
         }
-        return Tukey ? sigma2 / 6.0 * tukeySum : 0.5 * sigma2 * logSum.total();
+        return Loss::scaled(sigma2, costSum.total());
     }
     // Per block of points: first the Sampson residuals, Jacobians and weights into small arrays
     // (a loop without reductions or branches, which the compiler vectorises), then the 15 distinct
@@ -124,15 +89,7 @@ ESSENTIAL_INLINE_INTO_CLONES double evaluateLoss(const Problem& p, const Essenti
             const double u = sv * sv * invSigma2;
             S[i] = sv;
             U[i] = t.D > 0.0 ? u : -1.0; // -1: no Sampson distance, not in the cost
-            if (Tukey) {
-                // max(0, 1 - u) without a comparison, so that the loop stays branch-free and
-                // vectorised (exact: d + |d| is 2d or 0, and the halving is exact).
-                const double d = 1.0 - u;
-                const double v = 0.5 * (d + std::abs(d));
-                W[i] = v * v;
-            } else {
-                W[i] = 1.0 / (1.0 + u);
-            }
+            W[i] = Loss::weight(u);      // branch-free for both losses: the loop stays vectorised
         }
         for (int i = count; i < kBlock; ++i) { // pad the block to a multiple of kLanes
             S[i] = W[i] = 0.0;
@@ -140,13 +97,7 @@ ESSENTIAL_INLINE_INTO_CLONES double evaluateLoss(const Problem& p, const Essenti
                 J[m][i] = 0.0;
         }
         for (int i = 0; i < count; ++i) {
-            if (!(U[i] >= 0.0)) continue;
-            if (Tukey) {
-                const double v = std::max(0.0, 1.0 - U[i]);
-                tukeySum += 1.0 - v * v * v;
-            } else {
-                logSum.add(U[i]);
-            }
+            if (U[i] >= 0.0) costSum.add(U[i]);
         }
         const int padded = (count + kLanes - 1) / kLanes * kLanes;
         for (int i = 0; i < padded; i += kLanes) {
@@ -194,7 +145,7 @@ ESSENTIAL_INLINE_INTO_CLONES double evaluateLoss(const Problem& p, const Essenti
         a03, a13, a23, a33, a34,   //
         a04, a14, a24, a34, a44;
     *g << g0, g1, g2, g3, g4;
-    return Tukey ? sigma2 / 6.0 * tukeySum : 0.5 * sigma2 * logSum.total();
+    return Loss::scaled(sigma2, costSum.total());
 }
 
 /** The robust cost of the pose (the loss of `loss` at scale sigma = sqrt(sigma2)) and, when A and g
@@ -205,13 +156,13 @@ with no Sampson distance (D = 0) take no part. */
 ESSENTIAL_AVX2_CLONES double evaluateCauchy(const Problem& p, const EssentialPose& pose,
                                             double sigma2, Matrix5d* A, Vector5d* g)
 {
-    return evaluateLoss<false>(p, pose, sigma2, A, g);
+    return evaluateLoss<optim::CauchyLoss>(p, pose, sigma2, A, g);
 }
 
 ESSENTIAL_AVX2_CLONES double evaluateTukey(const Problem& p, const EssentialPose& pose,
                                            double sigma2, Matrix5d* A, Vector5d* g)
 {
-    return evaluateLoss<true>(p, pose, sigma2, A, g);
+    return evaluateLoss<optim::TukeyLoss>(p, pose, sigma2, A, g);
 }
 
 double evaluate(const Problem& p, const EssentialPose& pose, double sigma2, RobustLoss loss,
@@ -220,6 +171,24 @@ double evaluate(const Problem& p, const EssentialPose& pose, double sigma2, Robu
     return loss == RobustLoss::Tukey ? evaluateTukey(p, pose, sigma2, A, g)
                                      : evaluateCauchy(p, pose, sigma2, A, g);
 }
+
+/** All the points under the robust loss, as a model of optim::minimise. */
+struct SampsonModel
+{
+    static constexpr bool kCostWithEquations = true;
+    const Problem& problem;
+    double sigma2;
+    RobustLoss loss;
+
+    double linearise(const EssentialPose& pose, optim::NormalEquations& system) const
+    {
+        return evaluate(problem, pose, sigma2, loss, &system.A, &system.g);
+    }
+    double cost(const EssentialPose& pose) const
+    {
+        return evaluate(problem, pose, sigma2, loss, nullptr, nullptr);
+    }
+};
 
 } // namespace
 
@@ -235,51 +204,21 @@ IrlsResult refineIrls(const Problem& problem, const Matx33d& E0, double scale,
     EssentialPose pose;
     if (!geometry::poseFromEssential(E, pose)) return result;
 
-    const double sigma2 = scale * scale;
-    Matrix5d A, trialA;
-    Vector5d g, trialG;
-    double cost = evaluate(problem, pose, sigma2, settings.loss, &A, &g);
-    const double initialCost = cost;
-    double lambda = 1e-4;
-    for (int it = 0; it < settings.maxIterations; ++it) {
-        result.iterations = it + 1;
-        bool accepted = false;
-        // Up to a few damping increases per iteration; a failure at the largest damping means the
-        // pose is at a minimum of the robust cost to working precision. The first trial computes
-        // the normal equations along with its cost (they are the next iteration's if it is
-        // accepted, as it nearly always is); retries after a rejection are cost-only, and the
-        // equations are then computed once for the retry that is accepted.
-        for (int attempt = 0; attempt < 6 && !accepted; ++attempt) {
-            Matrix5d damped = A;
-            damped.diagonal() *= 1.0 + lambda;
-            const Vector5d step = damped.ldlt().solve(-g);
-            if (!step.allFinite()) break;
-            EssentialPose trial = pose;
-            trial.update(step);
-            const bool withEquations = attempt == 0;
-            const double trialCost =
-                evaluate(problem, trial, sigma2, settings.loss, withEquations ? &trialA : nullptr,
-                         withEquations ? &trialG : nullptr);
-            if (trialCost < cost) {
-                const double decrease = (cost - trialCost) / cost;
-                pose = trial;
-                cost = trialCost;
-                lambda = std::max(lambda * 0.1, 1e-12);
-                accepted = true;
-                if (decrease < settings.relativeTolerance) {
-                    it = settings.maxIterations;
-                } else if (withEquations) {
-                    A = trialA;
-                    g = trialG;
-                } else {
-                    evaluate(problem, pose, sigma2, settings.loss, &A, &g);
-                }
-            } else {
-                lambda *= 10.0;
-            }
-        }
-        if (!accepted) break;
-    }
+    // Up to six damping increases per iteration; a failure at the largest damping means the pose
+    // is at a minimum of the robust cost to working precision. The first trial computes the normal
+    // equations along with its cost (SampsonModel::kCostWithEquations): they are the next
+    // iteration's when it is accepted, as it nearly always is.
+    optim::LmSettings lm;
+    lm.maxIterations = settings.maxIterations;
+    lm.damping.initial = 1e-4;
+    lm.damping.floor = 1e-12;
+    lm.damping.attempts = 6;
+    lm.relativeTolerance = settings.relativeTolerance;
+    const SampsonModel model{problem, scale * scale, settings.loss};
+    optim::NormalEquations system;
+    const optim::LmResult outcome = optim::minimise(model, pose, system, lm);
+    result.iterations = outcome.iterations;
+    const double cost = outcome.cost, initialCost = outcome.initialCost;
     if (cost < initialCost) {
         geometry::reorthonormalise(pose.R);
         geometry::reorthonormalise(pose.Rt);

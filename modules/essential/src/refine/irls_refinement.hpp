@@ -15,13 +15,9 @@ namespace cv {
 namespace essential {
 namespace refine {
 
-/** The robust loss of the refinement, with its scale c:
- - Cauchy: rho(s) = c^2/2 log(1 + s^2/c^2), weight 1 / (1 + s^2/c^2); every point keeps some
-   pull (c^2 / s for s >> c), which keeps LM converging from a start that is off;
- - Tukey's biweight: rho(s) = c^2/6 (1 - (1 - s^2/c^2)^3) for |s| < c, c^2/6 beyond, weight
-   (1 - s^2/c^2)^2 inside and 0 beyond: no pull at all from the points beyond c, none near it,
-   which makes the minimum exact on noise-free inliers whatever the outliers (it needs a start
-   within about c of it). */
+/** The robust loss of the refinement, with its scale c (optim/robust_loss.hpp): Cauchy keeps some
+pull from every point, which converges from a start that is off; Tukey's biweight has none beyond c,
+which makes the minimum exact on noise-free inliers whatever the outliers. */
 enum class RobustLoss { Cauchy, Tukey };
 
 struct IrlsSettings

@@ -3,31 +3,19 @@
 
 #include "solvers/gauss_newton.hpp"
 
-#include "optim/small_linear_solve.hpp"
-
 namespace cv {
 namespace essential {
 namespace solvers {
 
-bool GaussNewtonSolver::converge(geometry::EssentialPose& pose, const Point2d* x1,
-                                 const Point2d* x2)
+optim::LmSettings GaussNewtonSolver::optimiserSettings(const GaussNewtonSettings& settings)
 {
-    geometry::Vector5d r;
-    geometry::Matrix5d J;
-    double previousCost = -1.0;
-    for (int it = 0; it < settings_.maxIterations; ++it) {
-        const double cost = evaluateMinimalSet(pose, x1, x2, r, J);
-        ++lastIterations_;
-        if (!(cost < HUGE_VAL)) return false;
-        if (cost < settings_.convergedCost) return true;
-        if (previousCost >= 0.0 && cost > settings_.divergenceFactor * previousCost) return false;
-        previousCost = cost;
-        geometry::Vector5d step;
-        // Singular J: a degenerate sample or start.
-        if (!optim::solvePartialPivot<5>(J, -r, step)) return false;
-        pose.update(step);
-    }
-    return evaluateMinimalSet(pose, x1, x2, r, J) < settings_.convergedCost;
+    optim::LmSettings gn;
+    gn.maxIterations = settings.maxIterations;
+    gn.damping.initial = 0.0; // undamped: every step taken
+    gn.stopCost = settings.convergedCost;
+    // A singular J (a degenerate sample or start), divergence or the cap: no solution.
+    gn.divergenceFactor = settings.divergenceFactor;
+    return gn;
 }
 
 } // namespace solvers

@@ -59,12 +59,12 @@ class GaussNewtonSolver : public IterativeMinimalSolver<GaussNewtonSettings>
 {
 public:
     explicit GaussNewtonSolver(const GaussNewtonSettings& settings = GaussNewtonSettings())
-        : IterativeMinimalSolver<GaussNewtonSettings>(settings)
+        : IterativeMinimalSolver<GaussNewtonSettings>(settings, optimiserSettings(settings))
     {
     }
 
-protected:
-    bool converge(geometry::EssentialPose& pose, const Point2d* x1, const Point2d* x2) override;
+    /** The optimiser's settings from the solver's. */
+    static optim::LmSettings optimiserSettings(const GaussNewtonSettings& settings);
 };
 
 } // namespace solvers

@@ -6,6 +6,7 @@
 
 #include "geometry/essential_decomposition.hpp"
 #include "opencv2/essential/solver.hpp"
+#include "optim/levenberg_marquardt.hpp"
 #include "solvers/minimal_set_problem.hpp"
 #include "solvers/sample_cheirality.hpp"
 #include "solvers/solution_output.hpp"
@@ -22,8 +23,8 @@ namespace solvers {
 /** What the optimisation-based minimal solvers (gn, lm) have in common: a five-point sample, at
 most one solution per call, a measured success rate, and the sequence of starts. Settings must have
 the members `successRate`, `rateByRotation`, `identityRateByRotation`, `extraStarts` and
-`requireCheirality`. A derived class implements
-converge(), the optimisation from one start.
+`requireCheirality`. A derived class gives the settings of optim::minimise, the optimisation from
+one start (gn undamped, lm damped).
 
 A call starts from R = I (with the least-squares translation for it); if that does not give a
 solution that puts the sample in front of both cameras, it starts again from the `extraStarts`
@@ -62,7 +63,10 @@ public:
     put the sample in front of the cameras at their start are optimised. */
     static constexpr int kRanked = 8;
 
-    explicit IterativeMinimalSolver(const Settings& settings) : settings_(settings) {}
+    IterativeMinimalSolver(const Settings& settings, const optim::LmSettings& optimiser)
+        : settings_(settings), optimiser_(optimiser)
+    {
+    }
     int sampleSize() const override { return 5; }
     int maxSolutions() const override { return 1; }
     double successRate() const override { return settings_.successRate; }
@@ -116,15 +120,23 @@ public:
     int lastStarts() const { return lastStarts_; }
 
 protected:
-    /** Optimises `pose` on the sample; true when it converged to an exact solution. Adds the
-    iterations it used to lastIterations_. */
-    virtual bool converge(geometry::EssentialPose& pose, const Point2d* x1, const Point2d* x2) = 0;
-
     Settings settings_;
     int lastIterations_ = 0;
     int lastStarts_ = 0;
 
 private:
+    /** Optimises `pose` on the sample; true when it converged to an exact solution. Adds the
+    iterations it used to lastIterations_: linearisations undamped, trial steps damped (what each
+    solver's cap counts). */
+    bool converge(geometry::EssentialPose& pose, const Point2d* x1, const Point2d* x2)
+    {
+        const MinimalSetModel model{x1, x2};
+        optim::SquareSystem system;
+        const optim::LmResult result = optim::minimise(model, pose, system, optimiser_);
+        lastIterations_ += optimiser_.damping.initial == 0.0 ? result.iterations : result.trials;
+        return result.status == optim::LmStatus::Converged;
+    }
+
     bool accept(geometry::EssentialPose& pose, const Point2d* x1, const Point2d* x2)
     {
         return converge(pose, x1, x2) &&
@@ -156,6 +168,7 @@ private:
         return rate;
     }
 
+    optim::LmSettings optimiser_;
     mutable Matx33d cachedModel_ = Matx33d::zeros();
     mutable double cachedRate_ = 0.0;
 };

@@ -55,12 +55,12 @@ class LevenbergMarquardtSolver : public IterativeMinimalSolver<LevenbergMarquard
 public:
     explicit LevenbergMarquardtSolver(
         const LevenbergMarquardtSettings& settings = LevenbergMarquardtSettings())
-        : IterativeMinimalSolver<LevenbergMarquardtSettings>(settings)
+        : IterativeMinimalSolver<LevenbergMarquardtSettings>(settings, optimiserSettings(settings))
     {
     }
 
-protected:
-    bool converge(geometry::EssentialPose& pose, const Point2d* x1, const Point2d* x2) override;
+    /** The optimiser's settings from the solver's. */
+    static optim::LmSettings optimiserSettings(const LevenbergMarquardtSettings& settings);
 };
 
 } // namespace solvers

@@ -8,6 +8,7 @@
 #define OPENCV_ESSENTIAL_SOLVERS_MINIMAL_SET_PROBLEM_HPP
 
 #include "geometry/essential_parameterisation.hpp"
+#include "optim/levenberg_marquardt.hpp"
 #include "optim/small_linear_solve.hpp"
 #include "optim/smallest_eigenvector.hpp"
 
@@ -95,6 +96,22 @@ inline double minimalSetCost(const geometry::EssentialPose& pose, const Point2d*
     }
     return cost;
 }
+
+/** The five-point sample as a model of optim::minimise: its square system of algebraic residuals
+(gn solves it undamped, lm damped) and their cost alone for lm's trial steps. */
+struct MinimalSetModel
+{
+    static constexpr bool kCostWithEquations = false;
+    const Point2d* x1;
+    const Point2d* x2;
+
+    double linearise(const geometry::EssentialPose& pose, optim::SquareSystem& system) const
+    {
+        system.changed();
+        return evaluateMinimalSet(pose, x1, x2, system.r, system.J);
+    }
+    double cost(const geometry::EssentialPose& pose) const { return minimalSetCost(pose, x1, x2); }
+};
 
 } // namespace solvers
 } // namespace essential

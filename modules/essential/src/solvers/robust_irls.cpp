@@ -6,14 +6,15 @@
 #include "geometry/essential_decomposition.hpp"
 #include "geometry/essential_parameterisation.hpp"
 #include "geometry/sampson.hpp"
-#include "optim/small_linear_solve.hpp"
+#include "optim/levenberg_marquardt.hpp"
+#include "optim/robust_loss.hpp"
 #include "solvers/minimal_set_problem.hpp"
 #include "solvers/solution_output.hpp"
 
-#include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
 
 namespace cv {
@@ -39,7 +40,8 @@ double robustCost(const EssentialPose& pose, const Point2d* x1, const Point2d* x
         const double r2 = q2.dot(Eq1) * q2.dot(Eq1);
         const double D1 = Eq1.head<2>().squaredNorm(), D2 = Etq2.head<2>().squaredNorm();
         if (!(D1 > 0.0) || !(D2 > 0.0)) continue;
-        cost += std::log1p(r2 / (D1 * sigma2)) + std::log1p(r2 / (D2 * sigma2));
+        cost += optim::CauchyLoss::cost(r2 / (D1 * sigma2)) +
+                optim::CauchyLoss::cost(r2 / (D2 * sigma2));
     }
     return cost;
 }
@@ -56,7 +58,7 @@ void normalEquations(const EssentialPose& pose, const Point2d* x1, const Point2d
         if (!geometry::epipolarDistancesAndJacobian(d, x1[i].x, x1[i].y, x2[i].x, x2[i].y, g, J))
             continue;
         for (int m = 0; m < 2; ++m) {
-            const double w = 1.0 / (1.0 + g[m] * g[m] / sigma2);
+            const double w = optim::CauchyLoss::weight(g[m] * g[m] / sigma2);
             const Eigen::Map<const Vector5d> j(J[m]);
             A.noalias() += w * j * j.transpose();
             b.noalias() += (w * g[m]) * j;
@@ -211,36 +213,49 @@ double RobustIrlsSolver::hitProbability(double inlierRatio) const
     return p;
 }
 
-/** One annealed IRLS run from `pose`; returns the final robust cost at the final scale. */
+namespace {
+
+/** The sample at one scale of the annealing, as a model of optim::minimise. */
+struct AnnealedSampleModel
+{
+    static constexpr bool kCostWithEquations = false;
+    const Point2d* x1;
+    const Point2d* x2;
+    int n;
+    double sigma2;
+
+    double linearise(const EssentialPose& pose, optim::NormalEquations& system) const
+    {
+        normalEquations(pose, x1, x2, n, sigma2, system.A, system.g);
+        return robustCost(pose, x1, x2, n, sigma2);
+    }
+    double cost(const EssentialPose& pose) const { return robustCost(pose, x1, x2, n, sigma2); }
+};
+
+} // namespace
+
+/** One annealed IRLS run from `pose`: one LM iteration (up to three trial steps) per scale, the
+scale shrinking towards its final value; returns the robust cost at the final scale. */
 double RobustIrlsSolver::fit(EssentialPose& pose, const Point2d* x1, const Point2d* x2) const
 {
     const int n = settings_.sampleSize;
     const double finalScale = settings_.finalScale * settings_.threshold;
     double sigma = std::max(settings_.initialScale, settings_.finalScale) * settings_.threshold;
-    double lambda = 1e-3;
-    Matrix5d A;
-    Vector5d b;
+    optim::Damping damping;
+    damping.initial = 1e-3;
+    damping.floor = 1e-9;
+    damping.attempts = 3;
+    double lambda = damping.initial;
+    optim::NormalEquations system, unused;
+    optim::LmResult counts;
     for (int it = 0; it < settings_.maxIterations; ++it) {
-        const double sigma2 = sigma * sigma;
-        normalEquations(pose, x1, x2, n, sigma2, A, b);
-        const double cost = robustCost(pose, x1, x2, n, sigma2);
-        // One LM step at this scale: up to three damping increases before moving on.
-        for (int attempt = 0; attempt < 3; ++attempt) {
-            Matrix5d damped = A;
-            damped.diagonal() *= 1.0 + lambda;
-            Vector5d step;
-            // Not positive definite (a zero column of J): the pivoting LDLT, as before.
-            if (!optim::solveCholesky<5>(damped, -b, step)) step = damped.ldlt().solve(-b);
-            if (!step.allFinite()) return HUGE_VAL;
-            EssentialPose trial = pose;
-            trial.update(step);
-            if (robustCost(trial, x1, x2, n, sigma2) < cost) {
-                pose = trial;
-                lambda = std::max(1e-9, lambda * 0.1);
-                break;
-            }
-            lambda *= 10.0;
-        }
+        AnnealedSampleModel model{x1, x2, n, sigma * sigma};
+        double cost = model.linearise(pose, system);
+        bool systemCurrent = true;
+        // A rejected iteration moves on to the next scale: the cost itself changes with it.
+        if (optim::dampedIteration(model, pose, system, unused, cost, lambda, damping, counts,
+                                   INT_MAX, systemCurrent) == optim::StepOutcome::Singular)
+            return HUGE_VAL;
         sigma = std::max(finalScale, sigma * settings_.scaleDecay);
     }
     return robustCost(pose, x1, x2, n, finalScale * finalScale);

@@ -3,10 +3,13 @@
 
 #include "degeneracy/plane_parallax.hpp"
 
+#include "geometry/essential_decomposition.hpp"
 #include "refine/irls_refinement.hpp"
 #include "sampling/uniform_sampler.hpp"
 
+#include <Eigen/Core>
 #include <opencv2/calib3d.hpp>
+#include <opencv2/core/eigen.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -67,14 +70,6 @@ search has drawn many clean samples, most of them with off-plane points, and MSA
 preferred the model they support; and even the plane probes would be a large share of an easy
 call (docs/TUNING.md, "Plane and parallax"). */
 constexpr double kMaxCheckedInlierRatio = 0.5;
-
-/** The essential matrix nearest to M in Frobenius norm: singular values (1, 1, 0). */
-Matx33d nearestEssential(const Matx33d& M)
-{
-    SVD svd(Mat(M), SVD::FULL_UV);
-    const Mat Es = svd.u * Mat::diag(Mat(Matx<double, 3, 1>(1, 1, 0))) * svd.vt;
-    return Matx33d(Es);
-}
 
 Vec3d homogeneous(const Point2d& p)
 {
@@ -219,8 +214,12 @@ PlaneParallaxResult checkPlaneAndParallax(const Problem& problem, const Matx33d&
     }
     auto essentialOf = [&](Vec3d e) {
         e /= norm(e);
-        const Matx33d Ex(0, -e[2], e[1], e[2], 0, -e[0], -e[1], e[0], 0);
-        return nearestEssential(Ex * H);
+        const Matx33d M = Matx33d(0, -e[2], e[1], e[2], 0, -e[0], -e[1], e[0], 0) * H;
+        Eigen::Matrix3d m;
+        cv2eigen(M, m);
+        Matx33d model;
+        eigen2cv(Eigen::Matrix3d(geometry::nearestEssential(m)), model);
+        return model;
     };
     // A model [e']x H carries the homography's error: H fitted to a plane seen in part of the image
     // is off in its projective part by enough that [t]x H with the true t keeps only half of the

@@ -39,6 +39,12 @@ bool poseFromEssential(const Eigen::Matrix3d& E, EssentialPose& pose)
     return true;
 }
 
+Eigen::Matrix3d nearestEssential(const Eigen::Matrix3d& M)
+{
+    const Eigen::JacobiSVD<Eigen::Matrix3d> svd(M, Eigen::ComputeFullU | Eigen::ComputeFullV);
+    return svd.matrixU() * Eigen::Vector3d(1.0, 1.0, 0.0).asDiagonal() * svd.matrixV().transpose();
+}
+
 Eigen::Matrix3d canonicalEssential(const Eigen::Matrix3d& E)
 {
     const double n = E.norm();

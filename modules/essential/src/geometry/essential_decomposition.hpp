@@ -26,6 +26,10 @@ bool decomposeEssential(const Eigen::Matrix3d& E, Eigen::Matrix3d& R1, Eigen::Ma
 matrix that came from any solver. Returns false if E cannot be decomposed. */
 bool poseFromEssential(const Eigen::Matrix3d& E, EssentialPose& pose);
 
+/** The essential matrix nearest to M in Frobenius norm, U diag(1, 1, 0) V^T from M's SVD (fixed
+size, no allocation). */
+Eigen::Matrix3d nearestEssential(const Eigen::Matrix3d& M);
+
 /** E scaled to Frobenius norm sqrt(2) (that of [t]x R with |t| = 1), with the sign chosen so that
 its largest-magnitude entry is positive: a canonical form for comparing essential matrices. */
 Eigen::Matrix3d canonicalEssential(const Eigen::Matrix3d& E);

@@ -102,7 +102,7 @@ ce::Problem subset(const ce::Problem& p, const std::vector<uchar>& mask)
 std::vector<uchar> inliersOf(const cv::Matx33d& E, const ce::Problem& p, double threshold)
 {
     std::vector<uchar> mask(static_cast<size_t>(p.size()));
-    ce::ransac::inlierMask(E, p, threshold, mask.data());
+    ce::ransac::inlierMask(E, p, p.inlierTest().withThreshold(threshold), mask.data());
     return mask;
 }
 
@@ -139,8 +139,8 @@ Output current(const Input& in)
     o.E = in.searchE;
     const auto r = ce::refine::refineIrls(p, in.searchE, 0.5 * p.threshold);
     if (r.improved) {
-        const double before = ce::ransac::scoreMsac(in.searchE, p).cost;
-        const double after = ce::ransac::scoreMsac(r.E, p).cost;
+        const double before = ce::ransac::scoreMsac(in.searchE, p, p.inlierTest()).cost;
+        const double after = ce::ransac::scoreMsac(r.E, p, p.inlierTest()).cost;
         if (after <= 1.05 * before) o.E = r.E;
     }
     o.mask = inliersOf(o.E, p, p.threshold);

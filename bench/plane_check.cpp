@@ -72,7 +72,7 @@ int main(int argc, char** argv)
             const cv::essential::Problem problem = cv::essential::makeProblem(s.x1, s.x2, 1.0 / f);
             const cv::Matx33d Em(E);
             const cv::essential::ransac::Score score =
-                cv::essential::ransac::scoreMsac(Em, problem);
+                cv::essential::ransac::scoreMsac(Em, problem, problem.inlierTest());
             cv::RNG rng(static_cast<uint64>(k));
             const cv::essential::ransac::PlaneParallaxResult r =
                 cv::essential::ransac::checkPlaneAndParallax(problem, Em, score, rng);

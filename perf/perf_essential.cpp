@@ -86,7 +86,7 @@ void BM_ScoreMsac(benchmark::State& state)
     cv::Matx33d E;
     const cv::essential::Problem problem = scoringProblem(int(state.range(0)), E);
     for (auto _ : state) {
-        auto score = cv::essential::ransac::scoreMsac(E, problem);
+        auto score = cv::essential::ransac::scoreMsac(E, problem, problem.inlierTest());
         benchmark::DoNotOptimize(score);
     }
     state.counters["ns_per_point"] = nsPer(double(state.iterations()) * double(state.range(0)));
@@ -103,7 +103,8 @@ void BM_ScoreSprt(benchmark::State& state)
     test.logOut = 0.1;
     bool rejected = false;
     for (auto _ : state) {
-        auto score = cv::essential::ransac::scoreMsacSprt(E, problem, HUGE_VAL, test, rejected);
+        auto score = cv::essential::ransac::scoreMsacSprt(E, problem, problem.inlierTest(),
+                                                          HUGE_VAL, test, rejected);
         benchmark::DoNotOptimize(score);
     }
     state.counters["ns_per_point"] = nsPer(double(state.iterations()) * double(state.range(0)));
@@ -116,7 +117,8 @@ void BM_InlierMask(benchmark::State& state)
     const cv::essential::Problem problem = scoringProblem(int(state.range(0)), E);
     std::vector<uchar> mask(problem.x1.size());
     for (auto _ : state) {
-        auto count = cv::essential::ransac::inlierMask(E, problem, problem.threshold, mask.data());
+        auto count =
+            cv::essential::ransac::inlierMask(E, problem, problem.inlierTest(), mask.data());
         benchmark::DoNotOptimize(count);
     }
     state.counters["ns_per_point"] = nsPer(double(state.iterations()) * double(state.range(0)));

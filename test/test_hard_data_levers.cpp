@@ -142,7 +142,7 @@ TEST(PlaneParallax, RecoversThePoseFromThePlanesTwin)
             const cv::Vec3d tk(ts[k]);
             const cv::Matx33d twin = essential_test::skewMatrix(tk) * Rk;
             const cv::essential::ransac::Score before =
-                cv::essential::ransac::scoreMsac(twin, problem);
+                cv::essential::ransac::scoreMsac(twin, problem, problem.inlierTest());
             cv::RNG rng(seed);
             const cv::essential::ransac::PlaneParallaxResult r =
                 cv::essential::ransac::checkPlaneAndParallax(problem, twin, before, rng);
@@ -173,7 +173,8 @@ TEST(PlaneParallax, LeavesModelsWithoutADominantPlaneAlone)
     for (uint64_t seed = 1; seed <= 5; ++seed) {
         const essential_test::SyntheticScene s = essential_test::makeScene(cfg, seed);
         const cv::essential::Problem problem = cv::essential::makeProblem(s.x1, s.x2, 1.0 / 500);
-        const cv::essential::ransac::Score score = cv::essential::ransac::scoreMsac(s.E, problem);
+        const cv::essential::ransac::Score score =
+            cv::essential::ransac::scoreMsac(s.E, problem, problem.inlierTest());
         cv::RNG rng(seed);
         const cv::essential::ransac::PlaneParallaxResult r =
             cv::essential::ransac::checkPlaneAndParallax(problem, s.E, score, rng);

@@ -77,7 +77,7 @@ TEST(InFrontScore, EqualsThePlainScoreWhenEveryInlierIsInFront)
     for (uint64_t seed = 1; seed <= 10; ++seed) {
         const SyntheticScene s = makeScene(nearConfig(1.0), seed);
         const Problem problem = cv::essential::makeProblem(s.x1, s.x2, kThreshold);
-        const Score plain = scoreMsac(s.E, problem);
+        const Score plain = scoreMsac(s.E, problem, problem.inlierTest());
         const Score front = scoreMsacInFront(s.E, problem);
         EXPECT_GT(plain.inliers, 290) << "seed " << seed; // 4 sigmas: all but a few
         EXPECT_EQ(front.inliers, plain.inliers) << "seed " << seed;
@@ -95,7 +95,7 @@ TEST(InFrontScore, InliersBehindTheCamerasCostAsOutliers)
         const int behind = addPointsBehind(s, 40, seed + 100);
         ASSERT_EQ(behind, 40) << "seed " << seed;
         const Problem problem = cv::essential::makeProblem(s.x1, s.x2, kThreshold);
-        const Score plain = scoreMsac(s.E, problem);
+        const Score plain = scoreMsac(s.E, problem, problem.inlierTest());
         const Score front = scoreMsacInFront(s.E, problem);
         // The exact points behind are inliers of the plain score at zero distance; the in-front
         // score charges each threshold^2.
@@ -115,7 +115,7 @@ TEST(InFrontScore, NeverBelowThePlainScoreAndKeepsTheEarlyExit)
         // Wrong models near the true one, where both scores have many inliers.
         const cv::Matx33d dR = essential_test::axisAngle(essential_test::randomUnit(g), 0.01);
         const cv::Matx33d E = essential_test::skewMatrix(s.t) * dR * s.R;
-        const Score plain = scoreMsac(E, problem);
+        const Score plain = scoreMsac(E, problem, problem.inlierTest());
         const Score front = scoreMsacInFront(E, problem);
         EXPECT_GE(front.cost, plain.cost * (1 - 1e-12)) << "seed " << seed;
         EXPECT_LE(front.inliers, plain.inliers) << "seed " << seed;

@@ -172,9 +172,10 @@ TEST(SymmetricEpipolar, ScoringUsesTheProblemsDistance)
     const auto symmetric =
         cv::essential::makeProblem(p1, p2, 0.05, cv::essential::DISTANCE_SYMMETRIC_EPIPOLAR);
     std::vector<double> d(p1.size());
-    cv::essential::ransac::squaredDistances(Ecv, symmetric, d.data());
+    cv::essential::ransac::squaredDistances(Ecv, symmetric, symmetric.inlierTest(), d.data());
     std::vector<uchar> mask(p1.size());
-    const int inliers = cv::essential::ransac::inlierMask(Ecv, symmetric, 0.05, mask.data());
+    const int inliers =
+        cv::essential::ransac::inlierMask(Ecv, symmetric, symmetric.inlierTest(), mask.data());
     int expected = 0;
     for (size_t i = 0; i < p1.size(); ++i) {
         const double ref =

@@ -152,7 +152,8 @@ PlaneParallaxResult checkPlaneAndParallax(const Problem& problem, const Matx33d&
     PlaneParallaxResult result;
     const int n = problem.size();
     std::vector<uchar> mask(static_cast<size_t>(n));
-    const int inliers = inlierMask(E, problem, problem.threshold, mask.data());
+    const InlierTest test = problem.inlierTest();
+    const int inliers = inlierMask(E, problem, test, mask.data());
     if (inliers < 8) return result; // a homography needs 4, and a plane share of it 8 to mean much
     if (inliers >= kMaxCheckedInlierRatio * n) return result;
 
@@ -198,7 +199,7 @@ PlaneParallaxResult checkPlaneAndParallax(const Problem& problem, const Matx33d&
         subsetProblem(problem, offPlane.data(), m, problem.threshold, problem.distance);
     std::vector<uchar> offMask(static_cast<size_t>(m));
     auto offInliers = [&](const Matx33d& model) {
-        return inlierMask(model, off, problem.threshold, offMask.data());
+        return inlierMask(model, off, test, offMask.data());
     };
     result.offPlaneBefore = offInliers(E);
     std::vector<int> chance;
@@ -227,14 +228,12 @@ PlaneParallaxResult checkPlaneAndParallax(const Problem& problem, const Matx33d&
     // the pairs are ranked with a looser band, and each new best is polished in all five degrees
     // of freedom (IRLS on the points within that band, as the search's local optimisation) before
     // it is compared with the model checked.
-    const double looseThreshold = kLooseBand * problem.threshold;
     // Every candidate fits the plane through H, so only the points off it rank them.
-    Problem looseOff = off;
-    looseOff.threshold = looseThreshold;
+    const InlierTest loose = test.withThreshold(kLooseBand * test.threshold);
     double bestCost = score.cost;
     std::vector<uchar> near(static_cast<size_t>(n));
     auto polishAndCompare = [&](const Matx33d& candidate) {
-        if (inlierMask(candidate, problem, looseThreshold, near.data()) < 5) return;
+        if (inlierMask(candidate, problem, loose, near.data()) < 5) return;
         const Problem subset =
             maskedProblem(problem, near.data(), problem.threshold, problem.distance);
         refine::IrlsSettings irls;
@@ -242,7 +241,7 @@ PlaneParallaxResult checkPlaneAndParallax(const Problem& problem, const Matx33d&
         const refine::IrlsResult polished =
             refine::refineIrls(subset, candidate, problem.threshold, irls);
         const Matx33d E2 = polished.improved ? polished.E : candidate;
-        const Score s = scoreMsac(E2, problem, bestCost);
+        const Score s = scoreMsac(E2, problem, test, bestCost);
         if (s.cost < bestCost && s.inliers >= 5) {
             bestCost = s.cost;
             result.E = E2;
@@ -268,7 +267,7 @@ PlaneParallaxResult checkPlaneAndParallax(const Problem& problem, const Matx33d&
             chance.push_back(offInliers(candidate));
         const double worst =
             pool.size() < static_cast<size_t>(kPolishedCandidates) ? HUGE_VAL : pool.back().first;
-        const Score s = scoreMsac(candidate, looseOff, worst);
+        const Score s = scoreMsac(candidate, off, loose, worst);
         if (!(s.cost < worst)) continue;
         pool.emplace_back(s.cost, candidate);
         std::sort(pool.begin(), pool.end(),

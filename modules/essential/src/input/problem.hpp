@@ -16,18 +16,32 @@
 namespace cv {
 namespace essential {
 
+/** What makes a correspondence an inlier of a model: its `distance` (Sampson or symmetric
+epipolar) at most `threshold` (normalised units). Scoring takes it by value beside the points, so a
+stage testing with another threshold (LMedS's, the plane check's looser band, local optimisation's
+inner one) changes a double, not a copy of the points. */
+struct InlierTest
+{
+    double threshold = 0.0;
+    EssentialDistance distance = DISTANCE_SAMPSON;
+
+    InlierTest withThreshold(double t) const { return InlierTest{t, distance}; }
+};
+
 /** Normalised correspondences in structure-of-arrays layout, so that scoring loops vectorise, plus
 the same points as Point2d arrays for the solvers' samples. */
 struct Problem
 {
     std::vector<double> x1, y1, x2, y2;
     std::vector<Point2d> p1, p2;
-    /** Inlier threshold on `distance`, in normalised units. */
+    /** The call's inlier threshold on `distance`, in normalised units (inlierTest()). */
     double threshold = 0.0;
-    /** The distance scoring, SPRT, masks and the support test compare with the threshold. */
+    /** The distance the call's inlier test compares with the threshold. */
     EssentialDistance distance = DISTANCE_SAMPSON;
 
     int size() const { return static_cast<int>(x1.size()); }
+    /** The call's inlier test, as the caller set it. */
+    InlierTest inlierTest() const { return InlierTest{threshold, distance}; }
 };
 
 /** Checks that the two point sets have the same size and at least `minPoints` points. */

@@ -81,7 +81,9 @@ void LocalOptimisation::polishRunnersUp(const CandidatePool& pool, RNG& rng, Bes
 void LocalOptimisation::innerSampling(BestModel& best, LocalOptimisationCounters& counters)
 {
     const int n = problem_.size();
-    inlierMask(best.E, problem_, kInnerThresholdFactor * problem_.threshold, mask_.data());
+    const InlierTest test = problem_.inlierTest();
+    inlierMask(best.E, problem_, test.withThreshold(kInnerThresholdFactor * test.threshold),
+               mask_.data());
     chosen_.clear();
     for (int i = 0; i < n; ++i)
         if (mask_[i]) chosen_.push_back(i);
@@ -116,7 +118,8 @@ void LocalOptimisation::polish(const Matx33d& start, RNG& rng, BestModel& best,
                                LocalOptimisationCounters& counters)
 {
     const int n = problem_.size();
-    inlierMask(start, problem_, settings_.band * problem_.threshold, mask_.data());
+    const InlierTest test = problem_.inlierTest();
+    inlierMask(start, problem_, test.withThreshold(settings_.band * test.threshold), mask_.data());
     chosen_.clear();
     for (int i = 0; i < n; ++i)
         if (mask_[i]) chosen_.push_back(i);

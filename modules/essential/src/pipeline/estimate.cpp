@@ -196,11 +196,13 @@ Mat estimate(const Problem& problem, const EssentialParams& params, OutputArray 
                 ransac::searchMsac(problem, *solver, rng, inFrontSettings);
             rep.inFrontSearch = true;
             if (second.found) {
-                const ransac::Score secondPlain = ransac::scoreMsac(second.E, problem);
+                const ransac::Score secondPlain =
+                    ransac::scoreMsac(second.E, problem, problem.inlierTest());
                 if (ransac::scoreMsacInFront(second.E, problem).cost <
                         ransac::scoreMsacInFront(found.E, problem).cost &&
                     secondPlain.cost <=
-                        kInFrontMaxPlainCostRatio * ransac::scoreMsac(found.E, problem).cost) {
+                        kInFrontMaxPlainCostRatio *
+                            ransac::scoreMsac(found.E, problem, problem.inlierTest()).cost) {
                     found.E = second.E;
                     found.inliers = secondPlain.inliers;
                     rep.inFrontSearchKept = true;
@@ -219,7 +221,7 @@ Mat estimate(const Problem& problem, const EssentialParams& params, OutputArray 
     rep.sprtRejections = found.sprtRejections;
     if (found.found && params.planeParallax && params.engine == ENGINE_ADAPTIVE &&
         params.score == SCORE_METHOD_MSAC) {
-        const ransac::Score before = ransac::scoreMsac(found.E, problem);
+        const ransac::Score before = ransac::scoreMsac(found.E, problem, problem.inlierTest());
         const ransac::PlaneParallaxResult checked =
             ransac::checkPlaneAndParallax(problem, found.E, before, rng);
         if (checked.improved) {
@@ -246,14 +248,15 @@ Mat estimate(const Problem& problem, const EssentialParams& params, OutputArray 
             // the truncated MSAC cost on all; keep it unless it is clearly worse on the MSAC cost
             // (5% slack for the difference of the two losses), which guards against a refinement
             // pulled away by structured outliers.
-            Problem scored = problem; // threshold of the search (differs for LMedS)
-            scored.threshold = found.threshold;
-            const double before = ransac::scoreMsac(found.E, scored).cost;
-            const double after = ransac::scoreMsac(refined.E, scored).cost;
+            // At the threshold of the search (it differs for LMedS).
+            const InlierTest searched = problem.inlierTest().withThreshold(found.threshold);
+            const double before = ransac::scoreMsac(found.E, problem, searched).cost;
+            const double after = ransac::scoreMsac(refined.E, problem, searched).cost;
             if (after <= 1.05 * before) E = refined.E;
         }
     }
-    rep.inliers = ransac::inlierMask(E, problem, found.threshold, inliers.data());
+    rep.inliers = ransac::inlierMask(
+        E, problem, problem.inlierTest().withThreshold(found.threshold), inliers.data());
     rep.timeRefineMs = msSince(tRefine);
     if (rep.inliers < 5 ||
         !ransac::moreDistinctInliersThan(problem, inliers, ransac::kMinimalSample) ||

@@ -66,7 +66,8 @@ FinalRefinementResult refineFinal(const Problem& problem, const Matx33d& E0, dou
         if (tukey) band = std::max(band, scale);
         IrlsSettings irls = settings.irls;
         irls.loss = tukey ? RobustLoss::Tukey : RobustLoss::Cauchy;
-        int count = ransac::inlierMask(E, problem, band, use.data());
+        int count =
+            ransac::inlierMask(E, problem, problem.inlierTest().withThreshold(band), use.data());
         if (settings.inFrontOnly && count >= kMinPoints) {
             // An E with no decomposition (it cannot happen for a search winner, which has one)
             // keeps the band's points.

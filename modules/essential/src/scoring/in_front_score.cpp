@@ -78,7 +78,7 @@ FourPoses inFrontOfFourPoses(const Matx33d& E, const Problem& problem, double th
 
 Score scoreMsacInFront(const Matx33d& E, const Problem& problem, double bestCost)
 {
-    const Score plain = scoreMsac(E, problem, bestCost);
+    const Score plain = scoreMsac(E, problem, problem.inlierTest(), bestCost);
     if (plain.cost >= bestCost) return plain; // the in-front cost is never lower
     const int n = problem.size();
     const double t2 = problem.threshold * problem.threshold;

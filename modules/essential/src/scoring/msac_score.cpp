@@ -21,14 +21,15 @@ problem says. The choice is made once per block, outside the loops; each loop ru
 arrays with the nine entries of E in registers, and the compiler vectorises it (two doubles per
 SSE2 register, four with AVX). A point on the epipoles gives NaN or +inf, which never passes the
 `<=` tests below, so it counts as an outlier at full truncated cost. */
-inline void distanceBlock(const Matx33d& E, const Problem& problem, int begin, int end, double* err)
+inline void distanceBlock(const Matx33d& E, const Problem& problem, EssentialDistance distance,
+                          int begin, int end, double* err)
 {
     const geometry::EssentialEntries e(E);
     const double* x1 = problem.x1.data();
     const double* y1 = problem.y1.data();
     const double* x2 = problem.x2.data();
     const double* y2 = problem.y2.data();
-    if (problem.distance == DISTANCE_SYMMETRIC_EPIPOLAR) {
+    if (distance == DISTANCE_SYMMETRIC_EPIPOLAR) {
         for (int i = begin; i < end; ++i)
             err[i - begin] = geometry::symmetricEpipolarSquared(e, x1[i], y1[i], x2[i], y2[i]);
     } else {
@@ -43,21 +44,21 @@ constexpr int kBlock = 64;
 
 } // namespace
 
-Score scoreMsac(const Matx33d& E, const Problem& problem, double bestCost)
+Score scoreMsac(const Matx33d& E, const Problem& problem, InlierTest test, double bestCost)
 {
-    return scoreMsacRange(E, problem, 0, problem.size(), bestCost);
+    return scoreMsacRange(E, problem, test, 0, problem.size(), bestCost);
 }
 
-ESSENTIAL_AVX2_CLONES Score scoreMsacRange(const Matx33d& E, const Problem& problem, int first,
-                                           int last, double bestCost)
+ESSENTIAL_AVX2_CLONES Score scoreMsacRange(const Matx33d& E, const Problem& problem,
+                                           InlierTest test, int first, int last, double bestCost)
 {
-    const double t2 = problem.threshold * problem.threshold;
+    const double t2 = test.threshold * test.threshold;
     Score s;
     s.cost = 0.0;
     double err[kBlock];
     for (int begin = first; begin < last; begin += kBlock) {
         const int end = std::min(last, begin + kBlock);
-        distanceBlock(E, problem, begin, end, err);
+        distanceBlock(E, problem, test.distance, begin, end, err);
         double cost = 0.0;
         int inliers = 0;
         for (int i = 0; i < end - begin; ++i) {
@@ -77,10 +78,10 @@ ESSENTIAL_AVX2_CLONES Score scoreMsacRange(const Matx33d& E, const Problem& prob
 points, so shorter blocks than kBlock waste less of the vectorised distance computation. */
 constexpr int kSprtBlock = 16;
 
-ESSENTIAL_AVX2_CLONES Score scoreMsacSprt(const Matx33d& E, const Problem& problem, double bestCost,
-                                          const SprtTest& test, bool& rejected)
+ESSENTIAL_AVX2_CLONES Score scoreMsacSprt(const Matx33d& E, const Problem& problem, InlierTest test,
+                                          double bestCost, const SprtTest& sprt, bool& rejected)
 {
-    const double t2 = problem.threshold * problem.threshold;
+    const double t2 = test.threshold * test.threshold;
     const int n = problem.size();
     Score s;
     s.cost = 0.0;
@@ -89,13 +90,13 @@ ESSENTIAL_AVX2_CLONES Score scoreMsacSprt(const Matx33d& E, const Problem& probl
     double err[kSprtBlock];
     for (int begin = 0; begin < n; begin += kSprtBlock) {
         const int end = std::min(n, begin + kSprtBlock);
-        distanceBlock(E, problem, begin, end, err);
+        distanceBlock(E, problem, test.distance, begin, end, err);
         for (int i = 0; i < end - begin; ++i) {
             const bool in = err[i] <= t2;
             s.cost += in ? err[i] : t2;
             s.inliers += in;
-            logLambda += in ? test.logIn : test.logOut;
-            if (logLambda > test.logA) {
+            logLambda += in ? sprt.logIn : sprt.logOut;
+            if (logLambda > sprt.logA) {
                 s.scored = begin + i + 1;
                 rejected = true;
                 return s;
@@ -116,21 +117,21 @@ ESSENTIAL_AVX2_CLONES void sampsonErrors(const Matx33d& E, const Problem& proble
 }
 
 ESSENTIAL_AVX2_CLONES void squaredDistances(const Matx33d& E, const Problem& problem,
-                                            double* errors)
+                                            InlierTest test, double* errors)
 {
-    distanceBlock(E, problem, 0, problem.size(), errors);
+    distanceBlock(E, problem, test.distance, 0, problem.size(), errors);
 }
 
-ESSENTIAL_AVX2_CLONES int inlierMask(const Matx33d& E, const Problem& problem, double threshold,
+ESSENTIAL_AVX2_CLONES int inlierMask(const Matx33d& E, const Problem& problem, InlierTest test,
                                      uchar* mask)
 {
     const int n = problem.size();
-    const double t2 = threshold * threshold;
+    const double t2 = test.threshold * test.threshold;
     double err[kBlock];
     int count = 0;
     for (int begin = 0; begin < n; begin += kBlock) {
         const int end = std::min(n, begin + kBlock);
-        distanceBlock(E, problem, begin, end, err);
+        distanceBlock(E, problem, test.distance, begin, end, err);
         for (int i = 0; i < end - begin; ++i) {
             const bool in = err[i] <= t2;
             mask[begin + i] = in ? 1 : 0;

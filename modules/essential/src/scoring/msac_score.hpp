@@ -24,32 +24,32 @@ struct Score
     int scored = 0; //!< points whose distance was computed (fewer than N after an early exit)
 };
 
-/** Scores E on all points. Gives up (returning a cost >= bestCost) as soon as the partial cost
-reaches bestCost: a hypothesis that cannot win needs no exact score. */
-Score scoreMsac(const Matx33d& E, const Problem& problem, double bestCost = HUGE_VAL);
+/** Scores E on all points under `test`. Gives up (returning a cost >= bestCost) as soon as the
+partial cost reaches bestCost: a hypothesis that cannot win needs no exact score. */
+Score scoreMsac(const Matx33d& E, const Problem& problem, InlierTest test,
+                double bestCost = HUGE_VAL);
 
 /** The MSAC score of E on the points [begin, end) only (for preemptive scoring block by block),
 with the same early exit at bestCost. */
-Score scoreMsacRange(const Matx33d& E, const Problem& problem, int begin, int end,
+Score scoreMsacRange(const Matx33d& E, const Problem& problem, InlierTest test, int begin, int end,
                      double bestCost = HUGE_VAL);
 
 /** MSAC scoring with Wald's SPRT (scoring/sprt.hpp): the points are checked in order and the
-log-likelihood ratio of `test` accumulated point by point; as soon as it exceeds test.logA the
+log-likelihood ratio of `sprt` accumulated point by point; as soon as it exceeds sprt.logA the
 hypothesis is rejected (`rejected` set, the returned Score counting the points checked and the
 inliers among them). The MSAC early exit at bestCost applies as well (checked every 16 points). */
-Score scoreMsacSprt(const Matx33d& E, const Problem& problem, double bestCost, const SprtTest& test,
-                    bool& rejected);
+Score scoreMsacSprt(const Matx33d& E, const Problem& problem, InlierTest test, double bestCost,
+                    const SprtTest& sprt, bool& rejected);
 
 /** Squared Sampson distance of every point to E, whatever the problem's inlier distance (LMedS
 ranks by it, as OpenCV's LMEDS does). */
 void sampsonErrors(const Matx33d& E, const Problem& problem, double* errors);
 
-/** Squared inlier distance (the problem's) of every point to E. */
-void squaredDistances(const Matx33d& E, const Problem& problem, double* errors);
+/** Squared distance (test.distance) of every point to E. */
+void squaredDistances(const Matx33d& E, const Problem& problem, InlierTest test, double* errors);
 
-/** Writes mask[i] = 1 for the points whose inlier distance (the problem's) is at most the
-threshold, 0 otherwise; returns the number of inliers. */
-int inlierMask(const Matx33d& E, const Problem& problem, double threshold, uchar* mask);
+/** Writes mask[i] = 1 for the inliers of E under `test`, 0 otherwise; returns their number. */
+int inlierMask(const Matx33d& E, const Problem& problem, InlierTest test, uchar* mask);
 
 } // namespace ransac
 } // namespace essential

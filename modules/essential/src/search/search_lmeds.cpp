@@ -93,7 +93,8 @@ SearchResult searchLmeds(const Problem& problem, EssentialSolver& solver, RNG& r
     // does not leave a threshold at the round-off level that rejects true inliers.
     result.threshold = std::max(sigma, kLmedsMinThreshold);
     std::vector<uchar> mask(static_cast<size_t>(n));
-    result.inliers = inlierMask(result.E, problem, result.threshold, mask.data());
+    result.inliers = inlierMask(result.E, problem,
+                                problem.inlierTest().withThreshold(result.threshold), mask.data());
     return result;
 }
 

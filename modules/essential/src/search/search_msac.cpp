@@ -161,7 +161,7 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
                                settings.minSampleCap));
         int need = stopRule(double(best.score.inliers) / n);
         if (!prosac || prosac->isUniform()) return need;
-        inlierMask(best.E, problem, problem.threshold, mask.data());
+        inlierMask(best.E, problem, problem.inlierTest(), mask.data());
         const int from = std::max(prosac->poolSize(), prosacStop->minLength());
         int length = n, inliers = 0;
         for (int k = 0; k < n - 1; ++k) {
@@ -214,7 +214,8 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
                     : best.score.cost;
             if (sprt.active()) {
                 bool rejected = false;
-                s = scoreMsacSprt(buffer.solutions[h], *scoring, bound, sprt.test(), rejected);
+                s = scoreMsacSprt(buffer.solutions[h], *scoring, scoring->inlierTest(), bound,
+                                  sprt.test(), rejected);
                 result.pointsScored += s.scored;
                 if (rejected) {
                     ++result.sprtRejections;

@@ -79,7 +79,8 @@ SearchResult searchPreemptive(const Problem& problem, EssentialSolver& solver, R
         const int probePoints = std::min(n, 4 * B);
         const Clock::time_point scoreStart = Clock::now();
         for (const Matx33d& E : hypotheses)
-            result.pointsScored += scoreMsacRange(E, data, 0, probePoints).scored;
+            result.pointsScored +=
+                scoreMsacRange(E, data, data.inlierTest(), 0, probePoints).scored;
         const double tPoint =
             msBetween(scoreStart, Clock::now()) / (double(hypotheses.size()) * probePoints);
         const double perHypothesis = tGen + std::min(2.0 * B, double(n)) * tPoint;
@@ -100,7 +101,7 @@ SearchResult searchPreemptive(const Problem& problem, EssentialSolver& solver, R
     for (int begin = 0; begin < n && alive.size() > 1; begin += B) {
         const int end = std::min(n, begin + B);
         for (int h : alive)
-            cost[h] += scoreMsacRange(hypotheses[h], data, begin, end).cost;
+            cost[h] += scoreMsacRange(hypotheses[h], data, data.inlierTest(), begin, end).cost;
         result.pointsScored += int64(end - begin) * int64(alive.size());
         const size_t keep = static_cast<size_t>(preemptiveSurvivors(M, end, B));
         if (alive.size() > keep) {
@@ -113,7 +114,7 @@ SearchResult searchPreemptive(const Problem& problem, EssentialSolver& solver, R
     const int best = *std::min_element(alive.begin(), alive.end(),
                                        [&](int a, int b) { return cost[a] < cost[b]; });
     result.E = hypotheses[best];
-    result.inliers = scoreMsac(result.E, problem).inliers;
+    result.inliers = scoreMsac(result.E, problem, problem.inlierTest()).inliers;
     result.found = result.inliers >= buffer.sampleSize;
     return result;
 }

@@ -78,12 +78,13 @@ TEST(InFrontScore, EqualsThePlainScoreWhenEveryInlierIsInFront)
         const SyntheticScene s = makeScene(nearConfig(1.0), seed);
         const Problem problem = cv::essential::makeProblem(s.x1, s.x2, kThreshold);
         const Score plain = scoreMsac(s.E, problem, problem.inlierTest());
-        const Score front = scoreMsacInFront(s.E, problem);
+        const Score front = scoreMsacInFront(s.E, problem, problem.inlierTest());
         EXPECT_GT(plain.inliers, 290) << "seed " << seed; // 4 sigmas: all but a few
         EXPECT_EQ(front.inliers, plain.inliers) << "seed " << seed;
         // Same terms summed in another order.
         EXPECT_NEAR(front.cost, plain.cost, 1e-12 * plain.cost) << "seed " << seed;
-        EXPECT_EQ(inliersInFront(s.E, problem, kThreshold), plain.inliers) << "seed " << seed;
+        EXPECT_EQ(inliersInFront(s.E, problem, problem.inlierTest()), plain.inliers)
+            << "seed " << seed;
     }
 }
 
@@ -96,12 +97,12 @@ TEST(InFrontScore, InliersBehindTheCamerasCostAsOutliers)
         ASSERT_EQ(behind, 40) << "seed " << seed;
         const Problem problem = cv::essential::makeProblem(s.x1, s.x2, kThreshold);
         const Score plain = scoreMsac(s.E, problem, problem.inlierTest());
-        const Score front = scoreMsacInFront(s.E, problem);
+        const Score front = scoreMsacInFront(s.E, problem, problem.inlierTest());
         // The exact points behind are inliers of the plain score at zero distance; the in-front
         // score charges each threshold^2.
         EXPECT_EQ(front.inliers, plain.inliers - behind) << "seed " << seed;
         EXPECT_NEAR(front.cost, plain.cost + behind * t2, 1e-9 * t2) << "seed " << seed;
-        EXPECT_EQ(inliersInFront(s.E, problem, kThreshold), plain.inliers - behind);
+        EXPECT_EQ(inliersInFront(s.E, problem, problem.inlierTest()), plain.inliers - behind);
     }
 }
 
@@ -116,17 +117,17 @@ TEST(InFrontScore, NeverBelowThePlainScoreAndKeepsTheEarlyExit)
         const cv::Matx33d dR = essential_test::axisAngle(essential_test::randomUnit(g), 0.01);
         const cv::Matx33d E = essential_test::skewMatrix(s.t) * dR * s.R;
         const Score plain = scoreMsac(E, problem, problem.inlierTest());
-        const Score front = scoreMsacInFront(E, problem);
+        const Score front = scoreMsacInFront(E, problem, problem.inlierTest());
         EXPECT_GE(front.cost, plain.cost * (1 - 1e-12)) << "seed " << seed;
         EXPECT_LE(front.inliers, plain.inliers) << "seed " << seed;
         // A bound the plain cost reaches: returned without decomposition, at or above the bound.
-        const Score exited = scoreMsacInFront(E, problem, 0.5 * plain.cost);
+        const Score exited = scoreMsacInFront(E, problem, problem.inlierTest(), 0.5 * plain.cost);
         EXPECT_GE(exited.cost, 0.5 * plain.cost) << "seed " << seed;
     }
     // A matrix with no decomposition costs N threshold^2.
     const SyntheticScene s = makeScene(nearConfig(0.5), 1);
     const Problem problem = cv::essential::makeProblem(s.x1, s.x2, kThreshold);
-    const Score zero = scoreMsacInFront(cv::Matx33d::zeros(), problem);
+    const Score zero = scoreMsacInFront(cv::Matx33d::zeros(), problem, problem.inlierTest());
     EXPECT_EQ(zero.inliers, 0);
     EXPECT_DOUBLE_EQ(zero.cost, problem.size() * kThreshold * kThreshold);
 }

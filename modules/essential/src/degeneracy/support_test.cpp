@@ -44,13 +44,13 @@ int poissonQuantile(double lambda, double level)
 
 } // namespace
 
-double chanceInlierRate(const Matx33d& E, const Problem& problem, double threshold)
+double chanceInlierRate(const Matx33d& E, const Problem& problem, InlierTest test)
 {
     const int n = problem.size();
     if (n < 2) return 0.0;
     const geometry::EssentialEntries e(E);
-    const bool symmetric = problem.distance == DISTANCE_SYMMETRIC_EPIPOLAR;
-    const double t2 = threshold * threshold;
+    const bool symmetric = test.distance == DISTANCE_SYMMETRIC_EPIPOLAR;
+    const double t2 = test.threshold * test.threshold;
     long hits = 0, pairs = 0;
     for (double fraction : kShiftFractions) {
         const int s = static_cast<int>(fraction * n) % n;
@@ -70,22 +70,22 @@ double chanceInlierRate(const Matx33d& E, const Problem& problem, double thresho
     return (hits + 1.0) / (pairs + 1.0);
 }
 
-int significantInliers(const Matx33d& E, const Problem& problem, double threshold, int sampleSize,
+int significantInliers(const Matx33d& E, const Problem& problem, InlierTest test, int sampleSize,
                        int hypotheses)
 {
     const int n = problem.size();
     const int others = n - sampleSize;
     if (others <= 0) return -1;
-    const double lambda = others * chanceInlierRate(E, problem, threshold);
+    const double lambda = others * chanceInlierRate(E, problem, test);
     const int needed = poissonQuantile(lambda, kAlpha / std::max(1, hypotheses));
     if (needed > others) return -1; // no power: cannot tell luck from geometry
     return sampleSize + needed;
 }
 
-bool supportIsSignificant(const Matx33d& E, const Problem& problem, double threshold, int inliers,
+bool supportIsSignificant(const Matx33d& E, const Problem& problem, InlierTest test, int inliers,
                           int sampleSize, int hypotheses)
 {
-    const int needed = significantInliers(E, problem, threshold, sampleSize, hypotheses);
+    const int needed = significantInliers(E, problem, test, sampleSize, hypotheses);
     return needed < 0 || inliers >= needed;
 }
 

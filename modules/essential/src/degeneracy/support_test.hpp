@@ -22,7 +22,7 @@ namespace ransac {
 /** The chance inlier rate of E on this data: the fraction of deliberately wrong pairs
 (q1[i], q2[(i + shift) mod N], for a few shifts) within the threshold. It accounts for how the
 points are spread in both images, which an analytic rate would have to assume. */
-double chanceInlierRate(const Matx33d& E, const Problem& problem, double threshold);
+double chanceInlierRate(const Matx33d& E, const Problem& problem, InlierTest test);
 
 /** True when `inliers` (which include the `sampleSize` points the model was fitted to) exceed what
 the best of `hypotheses` random models would reach by chance: with the chance rate p from
@@ -30,12 +30,12 @@ chanceInlierRate(), the extra inliers X ~ Poisson((N - sampleSize) p), and the s
 significant when P(X >= inliers - sampleSize) <= alpha / hypotheses (Bonferroni over the
 hypotheses, alpha = 0.01). When N is so small that even all points being inliers could not pass,
 the test has no power and the model is accepted (as cv::findEssentialMat would). */
-bool supportIsSignificant(const Matx33d& E, const Problem& problem, double threshold, int inliers,
+bool supportIsSignificant(const Matx33d& E, const Problem& problem, InlierTest test, int inliers,
                           int sampleSize, int hypotheses);
 
 /** The least inlier count (sample included) that supportIsSignificant() accepts for E with
 `hypotheses` hypotheses tried; -1 when the test has no power (every count is accepted). */
-int significantInliers(const Matx33d& E, const Problem& problem, double threshold, int sampleSize,
+int significantInliers(const Matx33d& E, const Problem& problem, InlierTest test, int sampleSize,
                        int hypotheses);
 
 /** Five correspondences are a minimal set: an essential matrix fits any five exactly. */

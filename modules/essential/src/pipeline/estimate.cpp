@@ -178,7 +178,7 @@ Mat estimate(const Problem& problem, const EssentialParams& params, OutputArray 
         // A winner with many inliers behind the cameras is a wrong model that the plain MSAC cost
         // preferred (scoring/in_front_score.hpp): search again scoring only the inliers in front,
         // and keep whichever winner has the lower in-front cost.
-        const int inFront = ransac::inliersInFront(found.E, problem, problem.threshold);
+        const int inFront = ransac::inliersInFront(found.E, problem, problem.inlierTest());
         // The second search gets at most the confidence cap of maxIters (not the extended
         // budget, minSampleCap), and no more than the first left of the call's sample budget: a
         // search that spent the whole budget met hard data, often with none of the geometry,
@@ -198,8 +198,8 @@ Mat estimate(const Problem& problem, const EssentialParams& params, OutputArray 
             if (second.found) {
                 const ransac::Score secondPlain =
                     ransac::scoreMsac(second.E, problem, problem.inlierTest());
-                if (ransac::scoreMsacInFront(second.E, problem).cost <
-                        ransac::scoreMsacInFront(found.E, problem).cost &&
+                if (ransac::scoreMsacInFront(second.E, problem, problem.inlierTest()).cost <
+                        ransac::scoreMsacInFront(found.E, problem, problem.inlierTest()).cost &&
                     secondPlain.cost <=
                         kInFrontMaxPlainCostRatio *
                             ransac::scoreMsac(found.E, problem, problem.inlierTest()).cost) {
@@ -260,8 +260,9 @@ Mat estimate(const Problem& problem, const EssentialParams& params, OutputArray 
     rep.timeRefineMs = msSince(tRefine);
     if (rep.inliers < 5 ||
         !ransac::moreDistinctInliersThan(problem, inliers, ransac::kMinimalSample) ||
-        !ransac::supportIsSignificant(E, problem, found.threshold, rep.inliers,
-                                      solver->sampleSize(), std::max(1, found.hypothesesScored))) {
+        !ransac::supportIsSignificant(
+            E, problem, problem.inlierTest().withThreshold(found.threshold), rep.inliers,
+            solver->sampleSize(), std::max(1, found.hypothesesScored))) {
         std::fill(inliers.begin(), inliers.end(), uchar(0));
         rep.inliers = 0;
         writeMask(mask, inliers, maskWriting);

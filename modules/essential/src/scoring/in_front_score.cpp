@@ -36,7 +36,7 @@ struct FourPoses
 
 /** For every inlier (distance at most threshold): its squared distance added to the poses that
 place it in front of both cameras (geometry::scaledDepths; -t flips both depth signs). */
-FourPoses inFrontOfFourPoses(const Matx33d& E, const Problem& problem, double threshold, bool& ok)
+FourPoses inFrontOfFourPoses(const Matx33d& E, const Problem& problem, InlierTest test, bool& ok)
 {
     FourPoses out;
     Eigen::Matrix3d R[2];
@@ -44,9 +44,9 @@ FourPoses inFrontOfFourPoses(const Matx33d& E, const Problem& problem, double th
     ok = pose::poseCandidates(E, R[0], R[1], t);
     if (!ok) return out;
     const geometry::EssentialEntries e(E);
-    const bool symmetric = problem.distance == DISTANCE_SYMMETRIC_EPIPOLAR;
-    const double t2 = threshold * threshold;
-    const double minParallax = kUndecidedParallax * threshold;
+    const bool symmetric = test.distance == DISTANCE_SYMMETRIC_EPIPOLAR;
+    const double t2 = test.threshold * test.threshold;
+    const double minParallax = kUndecidedParallax * test.threshold;
     const int n = problem.size();
     for (int i = 0; i < n; ++i) {
         const double x1 = problem.x1[i], y1 = problem.y1[i], x2 = problem.x2[i], y2 = problem.y2[i];
@@ -76,14 +76,14 @@ FourPoses inFrontOfFourPoses(const Matx33d& E, const Problem& problem, double th
 
 } // namespace
 
-Score scoreMsacInFront(const Matx33d& E, const Problem& problem, double bestCost)
+Score scoreMsacInFront(const Matx33d& E, const Problem& problem, InlierTest test, double bestCost)
 {
-    const Score plain = scoreMsac(E, problem, problem.inlierTest(), bestCost);
+    const Score plain = scoreMsac(E, problem, test, bestCost);
     if (plain.cost >= bestCost) return plain; // the in-front cost is never lower
     const int n = problem.size();
-    const double t2 = problem.threshold * problem.threshold;
+    const double t2 = test.threshold * test.threshold;
     bool ok = false;
-    const FourPoses poses = inFrontOfFourPoses(E, problem, problem.threshold, ok);
+    const FourPoses poses = inFrontOfFourPoses(E, problem, test, ok);
     Score s;
     s.scored = n;
     s.cost = n * t2;
@@ -98,10 +98,10 @@ Score scoreMsacInFront(const Matx33d& E, const Problem& problem, double bestCost
     return s;
 }
 
-int inliersInFront(const Matx33d& E, const Problem& problem, double threshold)
+int inliersInFront(const Matx33d& E, const Problem& problem, InlierTest test)
 {
     bool ok = false;
-    const FourPoses poses = inFrontOfFourPoses(E, problem, threshold, ok);
+    const FourPoses poses = inFrontOfFourPoses(E, problem, test, ok);
     return ok ? *std::max_element(poses.count.begin(), poses.count.end()) : 0;
 }
 

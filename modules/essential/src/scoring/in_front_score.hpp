@@ -25,11 +25,12 @@ lowest such cost; `inliers` counts the inliers in front under that pose. Never b
 scoreMsac(E, problem): a hypothesis whose plain cost reaches bestCost is returned with that plain
 score (cost >= bestCost) without being decomposed. An E that cannot be decomposed costs N
 threshold^2 with no inliers. */
-Score scoreMsacInFront(const Matx33d& E, const Problem& problem, double bestCost = HUGE_VAL);
+Score scoreMsacInFront(const Matx33d& E, const Problem& problem, InlierTest test,
+                       double bestCost = HUGE_VAL);
 
 /** Of E's inliers (squared distance at most threshold^2, as inlierMask), how many lie in front of
 both cameras under the pose that places the most of them there (0 if E cannot be decomposed). */
-int inliersInFront(const Matx33d& E, const Problem& problem, double threshold);
+int inliersInFront(const Matx33d& E, const Problem& problem, InlierTest test);
 
 } // namespace ransac
 } // namespace essential

@@ -25,7 +25,7 @@ struct Scorer
 
     Score operator()(const Matx33d& E, double bound) const
     {
-        return inFront ? scoreMsacInFront(E, *points, bound)
+        return inFront ? scoreMsacInFront(E, *points, points->inlierTest(), bound)
                        : scoreMsac(E, *points, points->inlierTest(), bound);
     }
 };

@@ -133,7 +133,7 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
         const double s = std::max(1e-3, solver.hitProbabilityAt(1.0, best.E));
         const double wMax =
             std::min(1.0, std::pow(1.0 / (s * confidenceCap), 1.0 / buffer.sampleSize));
-        const int inliersNeeded = significantInliers(best.E, problem, problem.threshold,
+        const int inliersNeeded = significantInliers(best.E, problem, problem.inlierTest(),
                                                      buffer.sampleSize, std::max(cap, 1));
         extensionVerdict = inliersNeeded >= 0 && wMax * n >= inliersNeeded ? 1 : 0;
         return extensionVerdict == 1;

@@ -102,7 +102,7 @@ ce::Problem subset(const ce::Problem& p, const std::vector<uchar>& mask)
 std::vector<uchar> inliersOf(const cv::Matx33d& E, const ce::Problem& p, double threshold)
 {
     std::vector<uchar> mask(static_cast<size_t>(p.size()));
-    ce::ransac::inlierMask(E, p, p.inlierTest().withThreshold(threshold), mask.data());
+    ce::scoring::inlierMask(E, p, p.inlierTest().withThreshold(threshold), mask.data());
     return mask;
 }
 
@@ -139,8 +139,8 @@ Output current(const Input& in)
     o.E = in.searchE;
     const auto r = ce::refine::refineIrls(p, in.searchE, 0.5 * p.threshold);
     if (r.improved) {
-        const double before = ce::ransac::scoreMsac(in.searchE, p, p.inlierTest()).cost;
-        const double after = ce::ransac::scoreMsac(r.E, p, p.inlierTest()).cost;
+        const double before = ce::scoring::scoreMsac(in.searchE, p, p.inlierTest()).cost;
+        const double after = ce::scoring::scoreMsac(r.E, p, p.inlierTest()).cost;
         if (after <= 1.05 * before) o.E = r.E;
     }
     o.mask = inliersOf(o.E, p, p.threshold);
@@ -380,7 +380,7 @@ int main(int argc, char** argv)
             ce::EssentialParams params;
             cv::Ptr<ce::EssentialSolver> solver = ce::createSolver(params.solver);
             cv::RNG rng(params.seed);
-            ce::ransac::SearchSettings settings;
+            ce::search::SearchSettings settings;
             settings.confidence = params.confidence;
             settings.maxIters = args.maxIters;
             settings.lo.iterations = args.lo;
@@ -388,8 +388,8 @@ int main(int argc, char** argv)
             settings.lo.band = args.loBand;
             settings.sprt = params.sprt;
             const double s0 = threadCpuMs();
-            const ce::ransac::SearchResult found =
-                ce::ransac::searchMsac(problem, *solver, rng, settings);
+            const ce::search::SearchResult found =
+                ce::search::searchMsac(problem, *solver, rng, settings);
             searchMs.push_back(threadCpuMs() - s0);
             samples += found.iterations;
             for (size_t c = 0; c < candidates.size(); ++c) {

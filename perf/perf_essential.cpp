@@ -86,7 +86,7 @@ void BM_ScoreMsac(benchmark::State& state)
     cv::Matx33d E;
     const cv::essential::Problem problem = scoringProblem(int(state.range(0)), E);
     for (auto _ : state) {
-        auto score = cv::essential::ransac::scoreMsac(E, problem, problem.inlierTest());
+        auto score = cv::essential::scoring::scoreMsac(E, problem, problem.inlierTest());
         benchmark::DoNotOptimize(score);
     }
     state.counters["ns_per_point"] = nsPer(double(state.iterations()) * double(state.range(0)));
@@ -98,13 +98,13 @@ void BM_ScoreSprt(benchmark::State& state)
 {
     cv::Matx33d E;
     const cv::essential::Problem problem = scoringProblem(int(state.range(0)), E);
-    cv::essential::ransac::SprtTest test; // A = infinity: no rejection, every point checked
+    cv::essential::scoring::SprtTest test; // A = infinity: no rejection, every point checked
     test.logIn = -1.0;
     test.logOut = 0.1;
     bool rejected = false;
     for (auto _ : state) {
-        auto score = cv::essential::ransac::scoreMsacSprt(E, problem, problem.inlierTest(),
-                                                          HUGE_VAL, test, rejected);
+        auto score = cv::essential::scoring::scoreMsacSprt(E, problem, problem.inlierTest(),
+                                                           HUGE_VAL, test, rejected);
         benchmark::DoNotOptimize(score);
     }
     state.counters["ns_per_point"] = nsPer(double(state.iterations()) * double(state.range(0)));
@@ -118,7 +118,7 @@ void BM_InlierMask(benchmark::State& state)
     std::vector<uchar> mask(problem.x1.size());
     for (auto _ : state) {
         auto count =
-            cv::essential::ransac::inlierMask(E, problem, problem.inlierTest(), mask.data());
+            cv::essential::scoring::inlierMask(E, problem, problem.inlierTest(), mask.data());
         benchmark::DoNotOptimize(count);
     }
     state.counters["ns_per_point"] = nsPer(double(state.iterations()) * double(state.range(0)));

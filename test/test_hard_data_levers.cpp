@@ -40,7 +40,7 @@ TEST(NapsacSampler, SamplesAreDistinctAndStayInOneCluster)
         p1.emplace_back(base + 0.1 * gen.uniform(0.0, 1.0), base + 0.1 * gen.uniform(0.0, 1.0));
         p2.emplace_back(base + 0.1 * gen.uniform(0.0, 1.0), base + 0.1 * gen.uniform(0.0, 1.0));
     }
-    cv::essential::ransac::NapsacSampler sampler(p1.data(), p2.data(), 200, 5);
+    cv::essential::sampling::NapsacSampler sampler(p1.data(), p2.data(), 200, 5);
     cv::RNG rng(11);
     int idx[5];
     for (int k = 0; k < 2000; ++k) {
@@ -66,7 +66,7 @@ TEST(NapsacSampler, LocalSamplesAreSmallerThanUniformOnes)
         p1.emplace_back(gen.uniform(0.0, 1.0), gen.uniform(0.0, 1.0));
         p2.emplace_back(p1.back().x + gen.uniform(-0.05, 0.05), p1.back().y);
     }
-    cv::essential::ransac::NapsacSampler sampler(p1.data(), p2.data(), n, 5);
+    cv::essential::sampling::NapsacSampler sampler(p1.data(), p2.data(), n, 5);
     cv::RNG rng(2);
     std::vector<double> local, uniform;
     int idx[5];
@@ -91,7 +91,7 @@ TEST(NapsacSampler, RefusesWhenNoCellHoldsASample)
 {
     // Four points in four corners (in both images): no cell at any level holds five.
     const std::vector<cv::Point2d> p = {{0, 0}, {1, 0}, {0, 1}, {1, 1}};
-    cv::essential::ransac::NapsacSampler sampler(p.data(), p.data(), 4, 5);
+    cv::essential::sampling::NapsacSampler sampler(p.data(), p.data(), 4, 5);
     cv::RNG rng(1);
     int idx[5];
     EXPECT_FALSE(sampler.draw(rng, idx));
@@ -141,11 +141,11 @@ TEST(PlaneParallax, RecoversThePoseFromThePlanesTwin)
             if (rotationErrorDeg(Rk, s.R) < 2.0) continue; // the true pose itself
             const cv::Vec3d tk(ts[k]);
             const cv::Matx33d twin = essential_test::skewMatrix(tk) * Rk;
-            const cv::essential::ransac::Score before =
-                cv::essential::ransac::scoreMsac(twin, problem, problem.inlierTest());
+            const cv::essential::scoring::Score before =
+                cv::essential::scoring::scoreMsac(twin, problem, problem.inlierTest());
             cv::RNG rng(seed);
-            const cv::essential::ransac::PlaneParallaxResult r =
-                cv::essential::ransac::checkPlaneAndParallax(problem, twin, before, rng);
+            const cv::essential::degeneracy::PlaneParallaxResult r =
+                cv::essential::degeneracy::checkPlaneAndParallax(problem, twin, before, rng);
             SCOPED_TRACE(testing::Message() << "seed " << seed << " solution " << k);
             EXPECT_TRUE(r.planeFound);
             ASSERT_TRUE(r.improved);
@@ -173,11 +173,11 @@ TEST(PlaneParallax, LeavesModelsWithoutADominantPlaneAlone)
     for (uint64_t seed = 1; seed <= 5; ++seed) {
         const essential_test::SyntheticScene s = essential_test::makeScene(cfg, seed);
         const cv::essential::Problem problem = cv::essential::makeProblem(s.x1, s.x2, 1.0 / 500);
-        const cv::essential::ransac::Score score =
-            cv::essential::ransac::scoreMsac(s.E, problem, problem.inlierTest());
+        const cv::essential::scoring::Score score =
+            cv::essential::scoring::scoreMsac(s.E, problem, problem.inlierTest());
         cv::RNG rng(seed);
-        const cv::essential::ransac::PlaneParallaxResult r =
-            cv::essential::ransac::checkPlaneAndParallax(problem, s.E, score, rng);
+        const cv::essential::degeneracy::PlaneParallaxResult r =
+            cv::essential::degeneracy::checkPlaneAndParallax(problem, s.E, score, rng);
         EXPECT_FALSE(r.planeFound) << "seed " << seed;
         EXPECT_FALSE(r.improved) << "seed " << seed;
         EXPECT_EQ(r.samples, 0) << "seed " << seed;
@@ -188,7 +188,7 @@ TEST(PlaneParallax, LeavesModelsWithoutADominantPlaneAlone)
 
 TEST(SampleBudget, OpenCvTimeModelGrowsWithTheIterationCap)
 {
-    using cv::essential::ransac::opencvTimeSamples;
+    using cv::essential::termination::opencvTimeSamples;
     // About 20 maxIters at N = 500 and 24 at 4000 (the cost model's ratio times 0.75).
     EXPECT_NEAR(opencvTimeSamples(1000, 500) / 1000.0, 20.0, 1.0);
     EXPECT_NEAR(opencvTimeSamples(1000, 4000) / 1000.0, 24.0, 1.5);
@@ -215,9 +215,10 @@ TEST(SampleBudget, HardDataGetsMoreSamplesEasyDataTheSame)
         SCOPED_TRACE(testing::Message() << "inlier ratio " << ratio);
         if (ratio < 0.5) {
             // The stopping rule is never met at 8% inliers: the caps bind.
-            EXPECT_LE(confidence.iterations, cv::essential::ransac::sampleCap(1000, 0.01));
+            EXPECT_LE(confidence.iterations, cv::essential::termination::sampleCap(1000, 0.01));
             EXPECT_GT(opencvTime.iterations, 4 * confidence.iterations);
-            EXPECT_LE(opencvTime.iterations, cv::essential::ransac::opencvTimeSamples(1000, 500));
+            EXPECT_LE(opencvTime.iterations,
+                      cv::essential::termination::opencvTimeSamples(1000, 500));
         } else {
             // Met after a few samples: the same samples, the same answer.
             EXPECT_EQ(opencvTime.iterations, confidence.iterations);

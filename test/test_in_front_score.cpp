@@ -20,10 +20,10 @@
 namespace {
 
 using cv::essential::Problem;
-using cv::essential::ransac::inliersInFront;
-using cv::essential::ransac::Score;
-using cv::essential::ransac::scoreMsac;
-using cv::essential::ransac::scoreMsacInFront;
+using cv::essential::scoring::inliersInFront;
+using cv::essential::scoring::Score;
+using cv::essential::scoring::scoreMsac;
+using cv::essential::scoring::scoreMsacInFront;
 using essential_test::makeScene;
 using essential_test::SceneConfig;
 using essential_test::SyntheticScene;

@@ -114,7 +114,7 @@ double expectedThreshold(const cv::essential::Problem& problem, const cv::Matx33
 {
     const int n = problem.size();
     std::vector<double> errors(static_cast<size_t>(n));
-    cv::essential::ransac::sampsonErrors(E, problem, errors.data());
+    cv::essential::scoring::sampsonErrors(E, problem, errors.data());
     std::nth_element(errors.begin(), errors.begin() + n / 2, errors.end());
     const double correction = 1.0 + 5.0 / std::max(n - sampleSize, 1);
     return std::max(2.5 * 1.4826 * correction * std::sqrt(errors[static_cast<size_t>(n / 2)]),
@@ -135,10 +135,10 @@ TEST(LmedsThreshold, FormulaAtEveryNumberOfPoints)
         const cv::Ptr<cv::essential::EssentialSolver> solver =
             cv::essential::createSolver("robust");
         cv::RNG rng(1);
-        cv::essential::ransac::SearchSettings settings;
+        cv::essential::search::SearchSettings settings;
         settings.maxIters = 50;
-        const cv::essential::ransac::SearchResult r =
-            cv::essential::ransac::searchLmeds(problem, *solver, rng, settings);
+        const cv::essential::search::SearchResult r =
+            cv::essential::search::searchLmeds(problem, *solver, rng, settings);
         ASSERT_TRUE(r.found);
         ASSERT_TRUE(std::isfinite(r.threshold));
         EXPECT_NEAR(r.threshold, expectedThreshold(problem, r.E, solver->sampleSize()),

@@ -17,7 +17,7 @@
 
 namespace {
 
-using cv::essential::ransac::preemptiveSurvivors;
+using cv::essential::search::preemptiveSurvivors;
 
 TEST(PreemptiveSchedule, HalvesAfterEveryBlock)
 {
@@ -72,11 +72,11 @@ TEST(PreemptiveSchedule, TheSearchScoresWhatTheScheduleSays)
             // gn returns at most one matrix per call, so the search holds exactly M hypotheses.
             cv::Ptr<cv::essential::EssentialSolver> solver = cv::essential::createSolver("gn");
             cv::RNG rng(3);
-            cv::essential::ransac::SearchSettings settings;
+            cv::essential::search::SearchSettings settings;
             settings.preemptiveHypotheses = M;
             settings.preemptiveBlockSize = B;
             const auto result =
-                cv::essential::ransac::searchPreemptive(problem, *solver, rng, settings);
+                cv::essential::search::searchPreemptive(problem, *solver, rng, settings);
             ASSERT_EQ(result.hypothesesScored, M);
             EXPECT_EQ(result.pointsScored, expectedPointsScored(M, cfg.numPoints, B));
         }

@@ -17,7 +17,7 @@
 
 namespace {
 
-using cv::essential::ransac::CandidatePool;
+using cv::essential::local_optimisation::CandidatePool;
 using cv::essential::solvers::essentialSampleIsInFront;
 using cv::essential::solvers::keepSolutionsInFront;
 using essential_test::makeScene;

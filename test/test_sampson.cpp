@@ -124,7 +124,7 @@ TEST(Sampson, ScoringAndTheJacobianUseTheSameDistance)
         for (int j = 0; j < 3; ++j)
             Ecv(i, j) = d.E(i, j);
     std::vector<double> errors(p1.size());
-    cv::essential::ransac::sampsonErrors(Ecv, problem, errors.data());
+    cv::essential::scoring::sampsonErrors(Ecv, problem, errors.data());
     for (size_t i = 0; i < p1.size(); ++i) {
         const double reference = sampsonSquared(d.E, p1[i].x, p1[i].y, p2[i].x, p2[i].y);
         EXPECT_NEAR(errors[i], reference, 1e-14 * reference) << i;
@@ -172,10 +172,10 @@ TEST(SymmetricEpipolar, ScoringUsesTheProblemsDistance)
     const auto symmetric =
         cv::essential::makeProblem(p1, p2, 0.05, cv::essential::DISTANCE_SYMMETRIC_EPIPOLAR);
     std::vector<double> d(p1.size());
-    cv::essential::ransac::squaredDistances(Ecv, symmetric, symmetric.inlierTest(), d.data());
+    cv::essential::scoring::squaredDistances(Ecv, symmetric, symmetric.inlierTest(), d.data());
     std::vector<uchar> mask(p1.size());
     const int inliers =
-        cv::essential::ransac::inlierMask(Ecv, symmetric, symmetric.inlierTest(), mask.data());
+        cv::essential::scoring::inlierMask(Ecv, symmetric, symmetric.inlierTest(), mask.data());
     int expected = 0;
     for (size_t i = 0; i < p1.size(); ++i) {
         const double ref =

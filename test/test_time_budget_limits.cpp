@@ -17,7 +17,7 @@
 
 namespace {
 
-using cv::essential::ransac::Deadline;
+using cv::essential::termination::Deadline;
 using essential_test::makeScene;
 using essential_test::SceneConfig;
 

@@ -178,7 +178,7 @@ TEST(LocalOptimisation, StopsTheSearchEarlierAndHonoursTheSampleSize)
 TEST(Prosac, SamplerFollowsTheGrowthSchedule)
 {
     const int n = 200, m = 5, TN = 2000;
-    cv::essential::ransac::ProsacSampler sampler(n, m, TN);
+    cv::essential::sampling::ProsacSampler sampler(n, m, TN);
     cv::RNG rng(7);
     std::vector<int> idx(m);
     int lastPool = m;
@@ -211,7 +211,7 @@ TEST(Prosac, SamplerFollowsTheGrowthSchedule)
     EXPECT_GT(highest, n - 20);
 
     // A termination length holds the pool.
-    cv::essential::ransac::ProsacSampler held(n, m, TN);
+    cv::essential::sampling::ProsacSampler held(n, m, TN);
     for (int t = 0; t < 20; ++t)
         held.draw(rng, idx.data());
     held.setTerminationLength(30);
@@ -225,7 +225,7 @@ TEST(Prosac, SamplerFollowsTheGrowthSchedule)
 
 TEST(Prosac, NonRandomnessNeedsMoreThanChanceSupport)
 {
-    const cv::essential::ransac::ProsacTermination stop(1000, 5);
+    const cv::essential::sampling::ProsacTermination stop(1000, 5);
     EXPECT_EQ(stop.minLength(), 100);
     // 5% of the other n - 5 points are inliers of a wrong model on average: I_min exceeds that,
     // grows with n, and stays far below n.

@@ -9,7 +9,7 @@
 
 namespace cv {
 namespace essential {
-namespace geometry {
+namespace degeneracy {
 
 namespace {
 
@@ -102,6 +102,6 @@ double homographyFraction(const Point2d* x1, const Point2d* x2, const uchar* mas
     return double(explained) / used;
 }
 
-} // namespace geometry
+} // namespace degeneracy
 } // namespace essential
 } // namespace cv

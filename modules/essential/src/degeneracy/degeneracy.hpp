@@ -13,7 +13,7 @@
 
 namespace cv {
 namespace essential {
-namespace geometry {
+namespace degeneracy {
 
 /** Fits the rotation R that best maps the rays of view 1 onto those of view 2 (orthogonal
 Procrustes on the unit bearing vectors of the masked points) and returns the fraction of those
@@ -28,7 +28,7 @@ H x1. 0 when fewer than 5 points are masked in. */
 double homographyFraction(const Point2d* x1, const Point2d* x2, const uchar* mask, int n,
                           double maxDistance);
 
-} // namespace geometry
+} // namespace degeneracy
 } // namespace essential
 } // namespace cv
 

@@ -7,7 +7,7 @@
 
 namespace cv {
 namespace essential {
-namespace geometry {
+namespace degeneracy {
 
 namespace {
 
@@ -39,6 +39,6 @@ void reportDegeneracy(const Problem& problem, const uchar* inliers, double thres
                         report.homographyFraction >= kDegenerateFraction;
 }
 
-} // namespace geometry
+} // namespace degeneracy
 } // namespace essential
 } // namespace cv

@@ -15,14 +15,14 @@
 
 namespace cv {
 namespace essential {
-namespace geometry {
+namespace degeneracy {
 
 /** Sets report.rotationOnlyFraction, homographyFraction and degenerate from the inliers of the
 estimate (`threshold` is its inlier threshold, normalised units). */
 void reportDegeneracy(const Problem& problem, const uchar* inliers, double threshold,
                       EssentialReport& report);
 
-} // namespace geometry
+} // namespace degeneracy
 } // namespace essential
 } // namespace cv
 

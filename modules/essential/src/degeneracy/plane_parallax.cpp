@@ -18,7 +18,7 @@
 
 namespace cv {
 namespace essential {
-namespace ransac {
+namespace degeneracy {
 
 namespace {
 
@@ -127,7 +127,7 @@ bool planeLikely(const std::vector<Point2d>& a, const std::vector<Point2d>& b, d
     int idx[4];
     Point2d pa[4], pb[4];
     for (int probe = 0; probe < kPlaneProbes; ++probe) {
-        drawUniformSample(rng, n, 4, idx);
+        sampling::drawUniformSample(rng, n, 4, idx);
         for (int i = 0; i < 4; ++i) {
             pa[i] = a[static_cast<size_t>(idx[i])];
             pb[i] = b[static_cast<size_t>(idx[i])];
@@ -147,13 +147,13 @@ bool planeLikely(const std::vector<Point2d>& a, const std::vector<Point2d>& b, d
 } // namespace
 
 PlaneParallaxResult checkPlaneAndParallax(const Problem& problem, const Matx33d& E,
-                                          const Score& score, RNG& rng)
+                                          const scoring::Score& score, RNG& rng)
 {
     PlaneParallaxResult result;
     const int n = problem.size();
     std::vector<uchar> mask(static_cast<size_t>(n));
     const InlierTest test = problem.inlierTest();
-    const int inliers = inlierMask(E, problem, test, mask.data());
+    const int inliers = scoring::inlierMask(E, problem, test, mask.data());
     if (inliers < 8) return result; // a homography needs 4, and a plane share of it 8 to mean much
     if (inliers >= kMaxCheckedInlierRatio * n) return result;
 
@@ -165,7 +165,7 @@ PlaneParallaxResult checkPlaneAndParallax(const Problem& problem, const Matx33d&
             a.push_back(problem.p1[i]);
             b.push_back(problem.p2[i]);
         }
-    const double band = kPlaneBand * problem.threshold;
+    const double band = kPlaneBand * test.threshold;
     if (!planeLikely(a, b, band, rng)) return result;
     Mat Hm =
         findHomography(a, b, RANSAC, band, noArray(), kHomographyIterations, kHomographyConfidence);
@@ -177,7 +177,7 @@ PlaneParallaxResult checkPlaneAndParallax(const Problem& problem, const Matx33d&
     // of a plane point exceeds 2 thresholds a third of the time, and those points, put among the
     // candidates, outnumber the true off-plane inliers; 4 thresholds keep 98% of them on the plane
     // (points with less parallax than that say little about the epipole anyway).
-    const double memberBand = kMemberBand * problem.threshold;
+    const double memberBand = kMemberBand * test.threshold;
     std::vector<int> offPlane;
     offPlane.reserve(static_cast<size_t>(n));
     int onPlaneInliers = 0;
@@ -195,11 +195,10 @@ PlaneParallaxResult checkPlaneAndParallax(const Problem& problem, const Matx33d&
     if (m < 2) return result;
 
     // The points off the plane as a problem of their own, to count a model's inliers among them.
-    const Problem off =
-        subsetProblem(problem, offPlane.data(), m, problem.threshold, problem.distance);
+    const Problem off = subsetProblem(problem, offPlane.data(), m, test);
     std::vector<uchar> offMask(static_cast<size_t>(m));
     auto offInliers = [&](const Matx33d& model) {
-        return inlierMask(model, off, test, offMask.data());
+        return scoring::inlierMask(model, off, test, offMask.data());
     };
     result.offPlaneBefore = offInliers(E);
     std::vector<int> chance;
@@ -233,15 +232,14 @@ PlaneParallaxResult checkPlaneAndParallax(const Problem& problem, const Matx33d&
     double bestCost = score.cost;
     std::vector<uchar> near(static_cast<size_t>(n));
     auto polishAndCompare = [&](const Matx33d& candidate) {
-        if (inlierMask(candidate, problem, loose, near.data()) < 5) return;
-        const Problem subset =
-            maskedProblem(problem, near.data(), problem.threshold, problem.distance);
+        if (scoring::inlierMask(candidate, problem, loose, near.data()) < 5) return;
+        const Problem subset = maskedProblem(problem, near.data(), test);
         refine::IrlsSettings irls;
         irls.maxIterations = kPolishIterations;
         const refine::IrlsResult polished =
-            refine::refineIrls(subset, candidate, problem.threshold, irls);
+            refine::refineIrls(subset, candidate, test.threshold, irls);
         const Matx33d E2 = polished.improved ? polished.E : candidate;
-        const Score s = scoreMsac(E2, problem, test, bestCost);
+        const scoring::Score s = scoring::scoreMsac(E2, problem, test, bestCost);
         if (s.cost < bestCost && s.inliers >= 5) {
             bestCost = s.cost;
             result.E = E2;
@@ -258,7 +256,7 @@ PlaneParallaxResult checkPlaneAndParallax(const Problem& problem, const Matx33d&
     int idx[2];
     for (int k = 0; k < kMaxParallaxSamples; ++k) {
         ++result.samples;
-        drawUniformSample(rng, m, 2, idx);
+        sampling::drawUniformSample(rng, m, 2, idx);
         const Vec3d e =
             lines[static_cast<size_t>(idx[0])].cross(lines[static_cast<size_t>(idx[1])]);
         if (!(norm(e) > 1e-12)) continue; // parallel lines: the two points do not fix the epipole
@@ -267,7 +265,7 @@ PlaneParallaxResult checkPlaneAndParallax(const Problem& problem, const Matx33d&
             chance.push_back(offInliers(candidate));
         const double worst =
             pool.size() < static_cast<size_t>(kPolishedCandidates) ? HUGE_VAL : pool.back().first;
-        const Score s = scoreMsac(candidate, off, loose, worst);
+        const scoring::Score s = scoring::scoreMsac(candidate, off, loose, worst);
         if (!(s.cost < worst)) continue;
         pool.emplace_back(s.cost, candidate);
         std::sort(pool.begin(), pool.end(),
@@ -292,6 +290,6 @@ PlaneParallaxResult checkPlaneAndParallax(const Problem& problem, const Matx33d&
     return result;
 }
 
-} // namespace ransac
+} // namespace degeneracy
 } // namespace essential
 } // namespace cv

@@ -22,13 +22,13 @@
 
 namespace cv {
 namespace essential {
-namespace ransac {
+namespace degeneracy {
 
 struct PlaneParallaxResult
 {
     bool improved = false;   //!< E below has a lower MSAC cost than the model checked
     Matx33d E;               //!< the better model (when improved)
-    Score score;             //!< its MSAC score on all points (when improved)
+    scoring::Score score;    //!< its MSAC score on all points (when improved)
     bool planeFound = false; //!< the model's inliers are dominated by one homography
     int planeInliers = 0;    //!< points of the whole problem within the homography's band
     int samples = 0;         //!< 2-point parallax samples drawn
@@ -46,9 +46,9 @@ not explain, builds E = [e']x H from each (projected onto the essential manifold
 best few by IRLS and keeps the best polished model if its MSAC cost is lower than `score`'s and its
 gain of inliers off the plane is well beyond chance. */
 PlaneParallaxResult checkPlaneAndParallax(const Problem& problem, const Matx33d& E,
-                                          const Score& score, RNG& rng);
+                                          const scoring::Score& score, RNG& rng);
 
-} // namespace ransac
+} // namespace degeneracy
 } // namespace essential
 } // namespace cv
 

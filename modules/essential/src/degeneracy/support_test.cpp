@@ -12,7 +12,7 @@
 
 namespace cv {
 namespace essential {
-namespace ransac {
+namespace degeneracy {
 
 namespace {
 
@@ -108,6 +108,6 @@ bool moreDistinctInliersThan(const Problem& problem, const std::vector<uchar>& m
     return false;
 }
 
-} // namespace ransac
+} // namespace degeneracy
 } // namespace essential
 } // namespace cv

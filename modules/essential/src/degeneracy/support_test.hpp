@@ -17,7 +17,7 @@
 
 namespace cv {
 namespace essential {
-namespace ransac {
+namespace degeneracy {
 
 /** The chance inlier rate of E on this data: the fraction of deliberately wrong pairs
 (q1[i], q2[(i + shift) mod N], for a few shifts) within the threshold. It accounts for how the
@@ -48,7 +48,7 @@ chance-support test counts points, not distinct ones). Stops at the first count 
 so on ordinary data it looks at a handful of points. */
 bool moreDistinctInliersThan(const Problem& problem, const std::vector<uchar>& mask, int count);
 
-} // namespace ransac
+} // namespace degeneracy
 } // namespace essential
 } // namespace cv
 

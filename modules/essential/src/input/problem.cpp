@@ -119,19 +119,17 @@ Problem makeProblem(std::vector<Point2d> n1, std::vector<Point2d> n2, double thr
     return p;
 }
 
-Problem subsetProblem(const Problem& problem, const int* indices, int count, double threshold,
-                      EssentialDistance distance)
+Problem subsetProblem(const Problem& problem, const int* indices, int count, InlierTest test)
 {
     std::vector<Point2d> a(static_cast<size_t>(count)), b(static_cast<size_t>(count));
     for (int i = 0; i < count; ++i) {
         a[static_cast<size_t>(i)] = problem.p1[static_cast<size_t>(indices[i])];
         b[static_cast<size_t>(i)] = problem.p2[static_cast<size_t>(indices[i])];
     }
-    return makeProblem(std::move(a), std::move(b), threshold, distance);
+    return makeProblem(std::move(a), std::move(b), test.threshold, test.distance);
 }
 
-Problem maskedProblem(const Problem& problem, const uchar* mask, double threshold,
-                      EssentialDistance distance)
+Problem maskedProblem(const Problem& problem, const uchar* mask, InlierTest test)
 {
     std::vector<Point2d> a, b;
     for (int i = 0; i < problem.size(); ++i)
@@ -139,7 +137,7 @@ Problem maskedProblem(const Problem& problem, const uchar* mask, double threshol
             a.push_back(problem.p1[static_cast<size_t>(i)]);
             b.push_back(problem.p2[static_cast<size_t>(i)]);
         }
-    return makeProblem(std::move(a), std::move(b), threshold, distance);
+    return makeProblem(std::move(a), std::move(b), test.threshold, test.distance);
 }
 
 void checkConfidence(double prob)

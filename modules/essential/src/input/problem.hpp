@@ -78,12 +78,10 @@ Problem makeProblem(std::vector<Point2d> n1, std::vector<Point2d> n2, double thr
 
 /** The points `indices[0..count)` of `problem`, in that order, as a problem with the given inlier
 test: what a refinement on the points near a model fits. */
-Problem subsetProblem(const Problem& problem, const int* indices, int count, double threshold,
-                      EssentialDistance distance);
+Problem subsetProblem(const Problem& problem, const int* indices, int count, InlierTest test);
 
 /** The same for the points whose `mask` entry is non-zero, in their order. */
-Problem maskedProblem(const Problem& problem, const uchar* mask, double threshold,
-                      EssentialDistance distance);
+Problem maskedProblem(const Problem& problem, const uchar* mask, InlierTest test);
 
 /** Argument checks shared by every overload; messages name the argument. */
 void checkConfidence(double prob);

@@ -18,7 +18,7 @@
 
 namespace cv {
 namespace essential {
-namespace ransac {
+namespace local_optimisation {
 
 /** The kSize lowest-cost hypotheses offered, no two within kSameModel of each other (distance of
 the unit-norm matrices up to sign). Fixed-size: offering allocates nothing. */
@@ -86,7 +86,7 @@ private:
     int count_ = 0, worst_ = 0;
 };
 
-} // namespace ransac
+} // namespace local_optimisation
 } // namespace essential
 } // namespace cv
 

@@ -12,7 +12,7 @@
 
 namespace cv {
 namespace essential {
-namespace ransac {
+namespace local_optimisation {
 
 namespace {
 
@@ -35,8 +35,9 @@ constexpr int kInnerMinSamples = 50;
 } // namespace
 
 LocalOptimisation::LocalOptimisation(const Problem& problem, EssentialSolver& solver,
-                                     const LocalOptimisationSettings& settings, const Scorer& score,
-                                     bool sampleCheirality, uint64 searchRngState, int minInliers)
+                                     const LocalOptimisationSettings& settings,
+                                     const scoring::Scorer& score, bool sampleCheirality,
+                                     uint64 searchRngState, int minInliers)
     : problem_(problem), solver_(solver), settings_(settings), score_(score),
       minInliers_(minInliers), inner_(solver, sampleCheirality),
       innerRng_(searchRngState ^ 0x5851f42d4c957f2dULL)
@@ -82,8 +83,8 @@ void LocalOptimisation::innerSampling(BestModel& best, LocalOptimisationCounters
 {
     const int n = problem_.size();
     const InlierTest test = problem_.inlierTest();
-    inlierMask(best.E, problem_, test.withThreshold(kInnerThresholdFactor * test.threshold),
-               mask_.data());
+    scoring::inlierMask(best.E, problem_,
+                        test.withThreshold(kInnerThresholdFactor * test.threshold), mask_.data());
     chosen_.clear();
     for (int i = 0; i < n; ++i)
         if (mask_[i]) chosen_.push_back(i);
@@ -91,9 +92,10 @@ void LocalOptimisation::innerSampling(BestModel& best, LocalOptimisationCounters
     if (pool < 2 * inner_.sampleSize) return;
     // kInnerSamples calls of a direct solver; an iterative one that solves a fraction s of clean
     // samples (at the best model's pose) gets kInnerSamples / s, as many expected hits.
-    const int innerSamples = sampleCap(kInnerSamples, solver_.hitProbabilityAt(1.0, best.E));
+    const int innerSamples =
+        termination::sampleCap(kInnerSamples, solver_.hitProbabilityAt(1.0, best.E));
     for (int k = 0; k < innerSamples; ++k) {
-        drawUniformSample(innerRng_, pool, inner_.sampleSize, inner_.indices.data());
+        sampling::drawUniformSample(innerRng_, pool, inner_.sampleSize, inner_.indices.data());
         for (int i = 0; i < inner_.sampleSize; ++i) {
             inner_.x1[i] = problem_.p1[chosen_[inner_.indices[i]]];
             inner_.x2[i] = problem_.p2[chosen_[inner_.indices[i]]];
@@ -104,7 +106,7 @@ void LocalOptimisation::innerSampling(BestModel& best, LocalOptimisationCounters
         ++counters.hypothesesGenerated;
         counters.hypothesesConverged += count;
         for (int h = 0; h < count; ++h) {
-            const Score s = score_(inner_.solutions[h], best.score.cost);
+            const scoring::Score s = score_(inner_.solutions[h], best.score.cost);
             counters.pointsScored += s.scored;
             if (s.cost < best.score.cost && s.inliers >= minInliers_) {
                 best.score = s;
@@ -119,7 +121,8 @@ void LocalOptimisation::polish(const Matx33d& start, RNG& rng, BestModel& best,
 {
     const int n = problem_.size();
     const InlierTest test = problem_.inlierTest();
-    inlierMask(start, problem_, test.withThreshold(settings_.band * test.threshold), mask_.data());
+    scoring::inlierMask(start, problem_, test.withThreshold(settings_.band * test.threshold),
+                        mask_.data());
     chosen_.clear();
     for (int i = 0; i < n; ++i)
         if (mask_[i]) chosen_.push_back(i);
@@ -130,14 +133,13 @@ void LocalOptimisation::polish(const Matx33d& start, RNG& rng, BestModel& best,
         k = settings_.sampleSize;
     }
     if (k < 5) return; // IRLS fits 5 degrees of freedom
-    const Problem subset =
-        subsetProblem(problem_, chosen_.data(), k, problem_.threshold, problem_.distance);
+    const Problem subset = subsetProblem(problem_, chosen_.data(), k, problem_.inlierTest());
     refine::IrlsSettings irls;
     irls.maxIterations = settings_.iterations;
     ++counters.polishes;
     const refine::IrlsResult refined = refine::refineIrls(subset, start, settings_.scale, irls);
     if (!refined.improved) return;
-    const Score s = score_(refined.E, best.score.cost);
+    const scoring::Score s = score_(refined.E, best.score.cost);
     counters.pointsScored += s.scored;
     if (s.cost < best.score.cost && s.inliers >= minInliers_) {
         best.score = s;
@@ -146,6 +148,6 @@ void LocalOptimisation::polish(const Matx33d& start, RNG& rng, BestModel& best,
     }
 }
 
-} // namespace ransac
+} // namespace local_optimisation
 } // namespace essential
 } // namespace cv

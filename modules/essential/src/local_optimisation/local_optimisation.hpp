@@ -23,7 +23,7 @@
 
 namespace cv {
 namespace essential {
-namespace ransac {
+namespace local_optimisation {
 
 struct LocalOptimisationSettings
 {
@@ -51,7 +51,7 @@ struct LocalOptimisationCounters
 struct BestModel
 {
     Matx33d E;
-    Score score;
+    scoring::Score score;
 };
 
 class LocalOptimisation
@@ -60,7 +60,7 @@ public:
     /** `searchRngState` seeds the inner samples' own generator, so that the search draws the same
     samples whatever local optimisation does; `minInliers` is what a replacement must keep. */
     LocalOptimisation(const Problem& problem, EssentialSolver& solver,
-                      const LocalOptimisationSettings& settings, const Scorer& score,
+                      const LocalOptimisationSettings& settings, const scoring::Scorer& score,
                       bool sampleCheirality, uint64 searchRngState, int minInliers);
 
     bool enabled() const { return settings_.iterations > 0; }
@@ -89,15 +89,15 @@ private:
     const Problem& problem_;
     EssentialSolver& solver_;
     LocalOptimisationSettings settings_;
-    Scorer score_;
+    scoring::Scorer score_;
     int minInliers_;
     std::vector<uchar> mask_;
     std::vector<int> chosen_;
-    SampleBuffer inner_;
+    sampling::SampleBuffer inner_;
     RNG innerRng_;
 };
 
-} // namespace ransac
+} // namespace local_optimisation
 } // namespace essential
 } // namespace cv
 

@@ -43,7 +43,7 @@ namespace essential {
 
 #ifdef ESSENTIAL_HAVE_OPENCV_LOOP
 
-namespace ransac {
+namespace search {
 
 namespace {
 
@@ -127,14 +127,14 @@ public:
         const Mat a = m1.getMat();
         const int n = a.checkVector(2);
         if (a.data == reinterpret_cast<const uchar*>(problem_.p1.data()) && n == problem_.size()) {
-            squaredDistances(E, problem_, problem_.inlierTest(), errors_.data());
+            scoring::squaredDistances(E, problem_, problem_.inlierTest(), errors_.data());
         } else {
             // Data other than the problem's arrays (not done by OpenCV 4.6's loops): read them.
             readSample(m1, x1_);
             readSample(m2, x2_);
             Problem other = makeProblem(x1_, x2_, problem_.threshold, problem_.distance);
             errors_.resize(static_cast<size_t>(other.size()));
-            squaredDistances(E, other, other.inlierTest(), errors_.data());
+            scoring::squaredDistances(E, other, other.inlierTest(), errors_.data());
         }
         const int count = static_cast<int>(errors_.size());
         err.create(count, 1, CV_32F);
@@ -232,7 +232,7 @@ SearchResult searchOpenCvLoop(const Problem& problem, EssentialSolver& solver, R
     return result;
 }
 
-} // namespace ransac
+} // namespace search
 
 bool isOpenCvLoopAvailable()
 {
@@ -241,7 +241,7 @@ bool isOpenCvLoopAvailable()
 
 #else // !ESSENTIAL_HAVE_OPENCV_LOOP
 
-namespace ransac {
+namespace search {
 
 SearchResult searchOpenCvLoop(const Problem& problem, EssentialSolver& solver, RNG& rng,
                               const SearchSettings& settings, int method)
@@ -258,7 +258,7 @@ SearchResult searchOpenCvLoop(const Problem& problem, EssentialSolver& solver, R
              "the module was built inside an OpenCV tree, where the probe is skipped");
 }
 
-} // namespace ransac
+} // namespace search
 
 bool isOpenCvLoopAvailable()
 {

@@ -106,7 +106,7 @@ Mat estimate(const Problem& problem, const EssentialParams& params, OutputArray 
     // Exactly a minimal set: return every distinct solution, stacked, as OpenCV does.
     if (n == solver->sampleSize() && n == 5) {
         const int64 t0 = getTickCount();
-        Mat stacked = ransac::solveExactlyFive(problem, *solver, rng, rep);
+        Mat stacked = search::solveExactlyFive(problem, *solver, rng, rep);
         rep.timeSearchMs = msSince(t0);
         if (!stacked.empty()) std::fill(inliers.begin(), inliers.end(), uchar(1));
         rep.success = !stacked.empty();
@@ -128,7 +128,7 @@ Mat estimate(const Problem& problem, const EssentialParams& params, OutputArray 
     if (params.engine == ENGINE_PREEMPTIVE)
         solvers::useIdentityStartOnlyIfIterative(*solver, /*keepCheirality=*/false);
     const int64 tSearch = getTickCount();
-    ransac::SearchSettings settings;
+    search::SearchSettings settings;
     settings.confidence = params.confidence;
     settings.maxIters = params.maxIterations;
     settings.preemptiveHypotheses = params.preemptiveHypotheses;
@@ -143,26 +143,26 @@ Mat estimate(const Problem& problem, const EssentialParams& params, OutputArray 
                                                                            : 0;
     settings.sprt = params.sprt; // used by the adaptive MSAC loop only
     if (params.sampleBudget == BUDGET_OPENCV_TIME) {
-        settings.minSampleCap = ransac::opencvTimeSamples(params.maxIterations, n);
+        settings.minSampleCap = termination::opencvTimeSamples(params.maxIterations, n);
         settings.localSamplesInBudget =
             params.budgetLocalSamples && params.sampler == SAMPLING_UNIFORM;
     }
     if (hasTimeBudget(params))
-        settings.deadline =
-            ransac::Deadline::after(params.timeBudgetMs - msSince(start) - finishingReserveMs(n));
-    auto search = [&]() {
+        settings.deadline = termination::Deadline::after(params.timeBudgetMs - msSince(start) -
+                                                         finishingReserveMs(n));
+    auto runSearch = [&]() {
         if (params.engine == ENGINE_OPENCV)
-            return ransac::searchOpenCvLoop(problem, *solver, rng, settings,
+            return search::searchOpenCvLoop(problem, *solver, rng, settings,
                                             params.score == SCORE_METHOD_LMEDS ? LMEDS : RANSAC);
         if (params.engine == ENGINE_PREEMPTIVE)
-            return ransac::searchPreemptive(problem, *solver, rng, settings);
+            return search::searchPreemptive(problem, *solver, rng, settings);
         if (params.score == SCORE_METHOD_LMEDS)
-            return ransac::searchLmeds(problem, *solver, rng, settings);
-        return ransac::searchMsac(problem, *solver, rng, settings);
+            return search::searchLmeds(problem, *solver, rng, settings);
+        return search::searchMsac(problem, *solver, rng, settings);
     };
-    ransac::SearchResult found = search();
-    if ((!found.found || found.inliers <= ransac::kMinimalSample) &&
-        params.engine != ENGINE_OPENCV && ransac::SampleBuffer::checksCheirality(*solver)) {
+    search::SearchResult found = runSearch();
+    if ((!found.found || found.inliers <= degeneracy::kMinimalSample) &&
+        params.engine != ENGINE_OPENCV && sampling::SampleBuffer::checksCheirality(*solver)) {
         // No sample put in front of both cameras gave a model with support beyond its own sample:
         // the data may contradict cheirality (points behind a camera, as OpenCV's own synthetic
         // test makes with unrestricted random rotations; with 6 such points every sample mixes
@@ -171,38 +171,39 @@ Mat estimate(const Problem& problem, const EssentialParams& params, OutputArray 
         // model with more support than that, and this second pass is rare.
         settings.sampleCheirality = false;
         settings.setSolverThreshold = false;
-        found = search();
+        found = runSearch();
     }
+    // The call's inlier test; the search's differs in its threshold for LMedS (found.threshold).
+    const InlierTest callTest = problem.inlierTest();
     if (found.found && params.inFrontCheck && params.engine == ENGINE_ADAPTIVE &&
         params.score == SCORE_METHOD_MSAC && settings.sampleCheirality) {
         // A winner with many inliers behind the cameras is a wrong model that the plain MSAC cost
         // preferred (scoring/in_front_score.hpp): search again scoring only the inliers in front,
         // and keep whichever winner has the lower in-front cost.
-        const int inFront = ransac::inliersInFront(found.E, problem, problem.inlierTest());
+        const int inFront = scoring::inliersInFront(found.E, problem, callTest);
         // The second search gets at most the confidence cap of maxIters (not the extended
         // budget, minSampleCap), and no more than the first left of the call's sample budget: a
         // search that spent the whole budget met hard data, often with none of the geometry,
         // where a second one would double the call's cost for little.
-        const int confidenceCap = ransac::sampleCap(params.maxIterations, solver->successRate());
+        const int confidenceCap =
+            termination::sampleCap(params.maxIterations, solver->successRate());
         const int left = std::max(confidenceCap, settings.minSampleCap) - found.iterations;
         if (left > 0 && found.inliers - inFront > kBehindFraction * found.inliers) {
-            ransac::SearchSettings inFrontSettings = settings;
+            search::SearchSettings inFrontSettings = settings;
             inFrontSettings.minSampleCap = 0;
             inFrontSettings.sampleLimit = std::min(confidenceCap, left);
             inFrontSettings.scoreInFront = true;
             inFrontSettings.sprt = false;
             inFrontSettings.setSolverThreshold = false;
-            const ransac::SearchResult second =
-                ransac::searchMsac(problem, *solver, rng, inFrontSettings);
+            const search::SearchResult second =
+                search::searchMsac(problem, *solver, rng, inFrontSettings);
             rep.inFrontSearch = true;
             if (second.found) {
-                const ransac::Score secondPlain =
-                    ransac::scoreMsac(second.E, problem, problem.inlierTest());
-                if (ransac::scoreMsacInFront(second.E, problem, problem.inlierTest()).cost <
-                        ransac::scoreMsacInFront(found.E, problem, problem.inlierTest()).cost &&
-                    secondPlain.cost <=
-                        kInFrontMaxPlainCostRatio *
-                            ransac::scoreMsac(found.E, problem, problem.inlierTest()).cost) {
+                const scoring::Score secondPlain = scoring::scoreMsac(second.E, problem, callTest);
+                if (scoring::scoreMsacInFront(second.E, problem, callTest).cost <
+                        scoring::scoreMsacInFront(found.E, problem, callTest).cost &&
+                    secondPlain.cost <= kInFrontMaxPlainCostRatio *
+                                            scoring::scoreMsac(found.E, problem, callTest).cost) {
                     found.E = second.E;
                     found.inliers = secondPlain.inliers;
                     rep.inFrontSearchKept = true;
@@ -221,9 +222,9 @@ Mat estimate(const Problem& problem, const EssentialParams& params, OutputArray 
     rep.sprtRejections = found.sprtRejections;
     if (found.found && params.planeParallax && params.engine == ENGINE_ADAPTIVE &&
         params.score == SCORE_METHOD_MSAC) {
-        const ransac::Score before = ransac::scoreMsac(found.E, problem, problem.inlierTest());
-        const ransac::PlaneParallaxResult checked =
-            ransac::checkPlaneAndParallax(problem, found.E, before, rng);
+        const scoring::Score before = scoring::scoreMsac(found.E, problem, callTest);
+        const degeneracy::PlaneParallaxResult checked =
+            degeneracy::checkPlaneAndParallax(problem, found.E, before, rng);
         if (checked.improved) {
             found.E = checked.E;
             found.inliers = checked.score.inliers;
@@ -238,6 +239,7 @@ Mat estimate(const Problem& problem, const EssentialParams& params, OutputArray 
     }
 
     const int64 tRefine = getTickCount();
+    const InlierTest searched = callTest.withThreshold(found.threshold);
     Matx33d E = found.E;
     if (params.refine) {
         const refine::FinalRefinementResult refined =
@@ -248,21 +250,17 @@ Mat estimate(const Problem& problem, const EssentialParams& params, OutputArray 
             // the truncated MSAC cost on all; keep it unless it is clearly worse on the MSAC cost
             // (5% slack for the difference of the two losses), which guards against a refinement
             // pulled away by structured outliers.
-            // At the threshold of the search (it differs for LMedS).
-            const InlierTest searched = problem.inlierTest().withThreshold(found.threshold);
-            const double before = ransac::scoreMsac(found.E, problem, searched).cost;
-            const double after = ransac::scoreMsac(refined.E, problem, searched).cost;
+            const double before = scoring::scoreMsac(found.E, problem, searched).cost;
+            const double after = scoring::scoreMsac(refined.E, problem, searched).cost;
             if (after <= 1.05 * before) E = refined.E;
         }
     }
-    rep.inliers = ransac::inlierMask(
-        E, problem, problem.inlierTest().withThreshold(found.threshold), inliers.data());
+    rep.inliers = scoring::inlierMask(E, problem, searched, inliers.data());
     rep.timeRefineMs = msSince(tRefine);
     if (rep.inliers < 5 ||
-        !ransac::moreDistinctInliersThan(problem, inliers, ransac::kMinimalSample) ||
-        !ransac::supportIsSignificant(
-            E, problem, problem.inlierTest().withThreshold(found.threshold), rep.inliers,
-            solver->sampleSize(), std::max(1, found.hypothesesScored))) {
+        !degeneracy::moreDistinctInliersThan(problem, inliers, degeneracy::kMinimalSample) ||
+        !degeneracy::supportIsSignificant(E, problem, searched, rep.inliers, solver->sampleSize(),
+                                          std::max(1, found.hypothesesScored))) {
         std::fill(inliers.begin(), inliers.end(), uchar(0));
         rep.inliers = 0;
         writeMask(mask, inliers, maskWriting);
@@ -272,7 +270,7 @@ Mat estimate(const Problem& problem, const EssentialParams& params, OutputArray 
     rep.success = true;
     rep.E = unitNorm(E);
     if (report) {
-        geometry::reportDegeneracy(problem, inliers.data(), found.threshold, rep);
+        degeneracy::reportDegeneracy(problem, inliers.data(), found.threshold, rep);
     }
 
     if (report && params.recoverPose) {

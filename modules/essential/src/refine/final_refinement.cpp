@@ -29,7 +29,7 @@ double estimateNoise(const Problem& problem, const Matx33d& E, double threshold,
 {
     const int n = problem.size();
     std::vector<double> squared(static_cast<size_t>(n));
-    ransac::sampsonErrors(E, problem, squared.data());
+    scoring::sampsonErrors(E, problem, squared.data());
     const double limit = window * window * threshold * threshold;
     size_t kept = 0;
     for (int i = 0; i < n; ++i)
@@ -67,7 +67,7 @@ FinalRefinementResult refineFinal(const Problem& problem, const Matx33d& E0, dou
         IrlsSettings irls = settings.irls;
         irls.loss = tukey ? RobustLoss::Tukey : RobustLoss::Cauchy;
         int count =
-            ransac::inlierMask(E, problem, problem.inlierTest().withThreshold(band), use.data());
+            scoring::inlierMask(E, problem, problem.inlierTest().withThreshold(band), use.data());
         if (settings.inFrontOnly && count >= kMinPoints) {
             // An E with no decomposition (it cannot happen for a search winner, which has one)
             // keeps the band's points.
@@ -79,7 +79,8 @@ FinalRefinementResult refineFinal(const Problem& problem, const Matx33d& E0, dou
             }
         }
         if (count < kMinPoints) break;
-        const Problem selected = maskedProblem(problem, use.data(), threshold, DISTANCE_SAMPSON);
+        const Problem selected =
+            maskedProblem(problem, use.data(), InlierTest{threshold, DISTANCE_SAMPSON});
         const IrlsResult refined = refineIrls(selected, E, scale, irls);
         result.iterations += refined.iterations;
         result.pointsUsed = count;

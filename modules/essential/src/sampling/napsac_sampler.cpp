@@ -9,7 +9,7 @@
 
 namespace cv {
 namespace essential {
-namespace ransac {
+namespace sampling {
 
 namespace {
 
@@ -109,6 +109,6 @@ bool NapsacSampler::draw(RNG& rng, int* indices)
     return true;
 }
 
-} // namespace ransac
+} // namespace sampling
 } // namespace essential
 } // namespace cv

@@ -16,7 +16,7 @@
 
 namespace cv {
 namespace essential {
-namespace ransac {
+namespace sampling {
 
 /** Local samples from a multi-resolution grid over both images. Each level divides the bounding
 box of the points in image 1 and, separately, in image 2 into c x c cells (c = 16, 8, 4, 2); two
@@ -45,7 +45,7 @@ private:
     std::vector<Level> levels_;
 };
 
-} // namespace ransac
+} // namespace sampling
 } // namespace essential
 } // namespace cv
 

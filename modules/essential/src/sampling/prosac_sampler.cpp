@@ -10,7 +10,7 @@
 
 namespace cv {
 namespace essential {
-namespace ransac {
+namespace sampling {
 
 ProsacSampler::ProsacSampler(int n, int m, int growthMaxSamples)
     : n_(n), m_(m), growthMax_(std::max(1, growthMaxSamples)), pool_(m), termination_(n),
@@ -108,6 +108,6 @@ int ProsacTermination::minInliers(int n) const
     return gridMin_[static_cast<size_t>(it - gridLength_.begin())];
 }
 
-} // namespace ransac
+} // namespace sampling
 } // namespace essential
 } // namespace cv

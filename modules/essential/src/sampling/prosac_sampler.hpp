@@ -15,7 +15,7 @@
 
 namespace cv {
 namespace essential {
-namespace ransac {
+namespace sampling {
 
 /** The PROSAC sampler with the paper's growth schedule.
 
@@ -77,7 +77,7 @@ private:
     std::vector<int> gridLength_, gridMin_;
 };
 
-} // namespace ransac
+} // namespace sampling
 } // namespace essential
 } // namespace cv
 

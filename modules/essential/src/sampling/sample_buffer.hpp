@@ -15,7 +15,7 @@
 
 namespace cv {
 namespace essential {
-namespace ransac {
+namespace sampling {
 
 /** The storage of one search loop, allocated once before it so the loop itself allocates nothing:
 sample indices, the sampled points and room for the solver's solutions. */
@@ -99,7 +99,7 @@ to the solutions in front (moved to the front of `solutions`). */
     }
 };
 
-} // namespace ransac
+} // namespace sampling
 } // namespace essential
 } // namespace cv
 

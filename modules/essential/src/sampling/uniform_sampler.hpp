@@ -8,7 +8,7 @@
 
 namespace cv {
 namespace essential {
-namespace ransac {
+namespace sampling {
 
 /** Draws k distinct indices uniformly from [0, n) by rejection: for k << n (5 of hundreds) a
 repeat is rare, so this beats a partial shuffle that would touch an n-sized array. */
@@ -28,7 +28,7 @@ inline void drawUniformSample(RNG& rng, int n, int k, int* indices)
     }
 }
 
-} // namespace ransac
+} // namespace sampling
 } // namespace essential
 } // namespace cv
 

@@ -15,7 +15,7 @@
 
 namespace cv {
 namespace essential {
-namespace ransac {
+namespace scoring {
 
 namespace {
 
@@ -105,6 +105,6 @@ int inliersInFront(const Matx33d& E, const Problem& problem, InlierTest test)
     return ok ? *std::max_element(poses.count.begin(), poses.count.end()) : 0;
 }
 
-} // namespace ransac
+} // namespace scoring
 } // namespace essential
 } // namespace cv

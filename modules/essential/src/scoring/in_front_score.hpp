@@ -17,7 +17,7 @@
 
 namespace cv {
 namespace essential {
-namespace ransac {
+namespace scoring {
 
 /** The MSAC cost of E where an inlier behind either camera costs threshold^2 like an outlier, for
 the pose of E ((R1 or R2) with (t or -t), geometry/essential_decomposition.hpp) that gives the
@@ -32,7 +32,7 @@ Score scoreMsacInFront(const Matx33d& E, const Problem& problem, InlierTest test
 both cameras under the pose that places the most of them there (0 if E cannot be decomposed). */
 int inliersInFront(const Matx33d& E, const Problem& problem, InlierTest test);
 
-} // namespace ransac
+} // namespace scoring
 } // namespace essential
 } // namespace cv
 

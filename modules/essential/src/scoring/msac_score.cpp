@@ -11,7 +11,7 @@
 
 namespace cv {
 namespace essential {
-namespace ransac {
+namespace scoring {
 
 namespace {
 
@@ -141,6 +141,6 @@ ESSENTIAL_AVX2_CLONES int inlierMask(const Matx33d& E, const Problem& problem, I
     return count;
 }
 
-} // namespace ransac
+} // namespace scoring
 } // namespace essential
 } // namespace cv

@@ -15,7 +15,7 @@
 
 namespace cv {
 namespace essential {
-namespace ransac {
+namespace scoring {
 
 struct Score
 {
@@ -51,7 +51,7 @@ void squaredDistances(const Matx33d& E, const Problem& problem, InlierTest test,
 /** Writes mask[i] = 1 for the inliers of E under `test`, 0 otherwise; returns their number. */
 int inlierMask(const Matx33d& E, const Problem& problem, InlierTest test, uchar* mask);
 
-} // namespace ransac
+} // namespace scoring
 } // namespace essential
 } // namespace cv
 

@@ -16,7 +16,7 @@
 
 namespace cv {
 namespace essential {
-namespace ransac {
+namespace scoring {
 
 struct Scorer
 {
@@ -30,7 +30,7 @@ struct Scorer
     }
 };
 
-} // namespace ransac
+} // namespace scoring
 } // namespace essential
 } // namespace cv
 

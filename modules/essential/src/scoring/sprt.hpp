@@ -16,7 +16,7 @@
 
 namespace cv {
 namespace essential {
-namespace ransac {
+namespace scoring {
 
 /** One designed test: the model's assumed inlier ratio epsilon, the probability delta that a point
 is consistent with a bad model, the decision threshold A and the log likelihood ratio increments. */
@@ -145,7 +145,7 @@ private:
     int tests_ = 0;
 };
 
-} // namespace ransac
+} // namespace scoring
 } // namespace essential
 } // namespace cv
 

@@ -12,7 +12,7 @@
 
 namespace cv {
 namespace essential {
-namespace ransac {
+namespace search {
 
 namespace {
 
@@ -91,6 +91,6 @@ Mat solveExactlyFive(const Problem& problem, EssentialSolver& solver, RNG& rng,
     return stacked;
 }
 
-} // namespace ransac
+} // namespace search
 } // namespace essential
 } // namespace cv

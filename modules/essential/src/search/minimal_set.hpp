@@ -16,14 +16,14 @@
 
 namespace cv {
 namespace essential {
-namespace ransac {
+namespace search {
 
 /** The distinct solutions of a five-point problem as a 3k x 3 matrix (k <= 10, each of unit norm;
 empty when there is none); counts the solver calls in `report`. */
 Mat solveExactlyFive(const Problem& problem, EssentialSolver& solver, RNG& rng,
                      EssentialReport& report);
 
-} // namespace ransac
+} // namespace search
 } // namespace essential
 } // namespace cv
 

@@ -17,21 +17,21 @@
 
 namespace cv {
 namespace essential {
-namespace ransac {
+namespace search {
 
 struct SearchSettings
 {
     double confidence = 0.999;
     int maxIters = 1000;
     /** The search returns its best model so far once this passes (checked every few samples). */
-    Deadline deadline;
+    termination::Deadline deadline;
     /** Preemptive search: hypotheses generated up front (0: chosen from the deadline, or
     kDefaultPreemptiveHypotheses without one) and the block size B. */
     int preemptiveHypotheses = 0;
     int preemptiveBlockSize = 100;
     /** Adaptive MSAC: local optimisation of each new best model
     (local_optimisation/local_optimisation.hpp; iterations 0: none). */
-    LocalOptimisationSettings lo;
+    local_optimisation::LocalOptimisationSettings lo;
     /** Adaptive MSAC and LMedS: PROSAC sampling (points sorted best first) instead of uniform. */
     bool prosac = false;
     /** Adaptive MSAC: every napsacEvery-th sample is spatially local (sampling/napsac_sampler.hpp);
@@ -96,7 +96,7 @@ struct SearchResult
         sprtRejections += other.sprtRejections;
     }
     /** Adds the work local optimisation did inside this search (each inner hypothesis scored). */
-    void addWork(const LocalOptimisationCounters& lo)
+    void addWork(const local_optimisation::LocalOptimisationCounters& lo)
     {
         hypothesesGenerated += lo.hypothesesGenerated;
         hypothesesConverged += lo.hypothesesConverged;
@@ -167,7 +167,7 @@ has no usable OpenCV loop. */
 SearchResult searchOpenCvLoop(const Problem& problem, EssentialSolver& solver, RNG& rng,
                               const SearchSettings& settings, int method);
 
-} // namespace ransac
+} // namespace search
 } // namespace essential
 } // namespace cv
 

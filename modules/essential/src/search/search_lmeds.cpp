@@ -14,7 +14,7 @@
 
 namespace cv {
 namespace essential {
-namespace ransac {
+namespace search {
 
 namespace {
 
@@ -37,19 +37,20 @@ SearchResult searchLmeds(const Problem& problem, EssentialSolver& solver, RNG& r
     SearchResult result;
     const int n = problem.size();
     // No setThreshold(): LMedS has no inlier threshold of its own (it derives one from the data).
-    SampleBuffer buffer(solver, settings.sampleCheirality);
+    sampling::SampleBuffer buffer(solver, settings.sampleCheirality);
     if (n < buffer.sampleSize) return result;
 
     // OpenCV's LMeDS assumes 45% outliers to fix the number of samples (at least 3).
     const double assumedInlierRatio = 0.55;
-    const int samples = std::max(
-        3, requiredIterations(settings.confidence, solver.hitProbability(assumedInlierRatio),
-                              sampleCap(settings.maxIters, solver.successRate())));
+    const int samples =
+        std::max(3, termination::requiredIterations(
+                        settings.confidence, solver.hitProbability(assumedInlierRatio),
+                        termination::sampleCap(settings.maxIters, solver.successRate())));
     // PROSAC: its growth schedule over the fixed number of samples (LMedS has no adaptive stopping
     // rule, so PROSAC only changes the order in which the points are tried).
-    std::unique_ptr<ProsacSampler> prosac;
+    std::unique_ptr<sampling::ProsacSampler> prosac;
     if (settings.prosac) {
-        prosac.reset(new ProsacSampler(n, buffer.sampleSize, samples));
+        prosac.reset(new sampling::ProsacSampler(n, buffer.sampleSize, samples));
         buffer.prosac = prosac.get();
     }
     std::vector<double> errors(static_cast<size_t>(n));
@@ -63,7 +64,7 @@ SearchResult searchLmeds(const Problem& problem, EssentialSolver& solver, RNG& r
         for (int h = 0; h < count; ++h) {
             ++result.hypothesesScored;
             result.pointsScored += n;
-            sampsonErrors(buffer.solutions[h], problem, errors.data());
+            scoring::sampsonErrors(buffer.solutions[h], problem, errors.data());
             for (double& e : errors)
                 if (std::isnan(e)) e = HUGE_VAL;
             std::nth_element(errors.begin(), errors.begin() + n / 2, errors.end());
@@ -93,11 +94,11 @@ SearchResult searchLmeds(const Problem& problem, EssentialSolver& solver, RNG& r
     // does not leave a threshold at the round-off level that rejects true inliers.
     result.threshold = std::max(sigma, kLmedsMinThreshold);
     std::vector<uchar> mask(static_cast<size_t>(n));
-    result.inliers = inlierMask(result.E, problem,
-                                problem.inlierTest().withThreshold(result.threshold), mask.data());
+    result.inliers = scoring::inlierMask(
+        result.E, problem, problem.inlierTest().withThreshold(result.threshold), mask.data());
     return result;
 }
 
-} // namespace ransac
+} // namespace search
 } // namespace essential
 } // namespace cv

@@ -20,7 +20,7 @@
 
 namespace cv {
 namespace essential {
-namespace ransac {
+namespace search {
 
 namespace {
 
@@ -50,7 +50,7 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
 {
     SearchResult result = beginSearch(problem, solver, settings);
     const int n = problem.size();
-    SampleBuffer buffer(solver, settings.sampleCheirality);
+    sampling::SampleBuffer buffer(solver, settings.sampleCheirality);
     if (n < buffer.sampleSize) return result;
     // The sample cap: from the solver's rate at any pose until there is a model, then from its
     // rate at the model's pose (EssentialSolver::hitProbabilityAt).
@@ -58,59 +58,61 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
     auto limited = [&](int samples) {
         return settings.sampleLimit > 0 ? std::min(samples, settings.sampleLimit) : samples;
     };
-    int cap = limited(
-        std::max(sampleCap(settings.maxIters, solver.successRate()), settings.minSampleCap));
+    int cap = limited(std::max(termination::sampleCap(settings.maxIters, solver.successRate()),
+                               settings.minSampleCap));
 
     // PROSAC: the samples follow the growth schedule with T_N = the confidence cap, so that the
     // pool covers every point by the time that cap is reached.
-    std::unique_ptr<ProsacSampler> prosac;
-    std::unique_ptr<ProsacTermination> prosacStop;
+    std::unique_ptr<sampling::ProsacSampler> prosac;
+    std::unique_ptr<sampling::ProsacTermination> prosacStop;
     if (settings.prosac) {
         // T_N from the confidence cap alone, not the OpenCV-time budget (settings.minSampleCap,
         // about 20 times larger): the pool then grows at the pace PROSAC's schedule was set for,
         // and past T_N the sampler is uniform for the rest of the budget.
-        prosac.reset(new ProsacSampler(n, buffer.sampleSize,
-                                       sampleCap(settings.maxIters, solver.successRate())));
-        prosacStop.reset(new ProsacTermination(n, buffer.sampleSize));
+        prosac.reset(new sampling::ProsacSampler(
+            n, buffer.sampleSize, termination::sampleCap(settings.maxIters, solver.successRate())));
+        prosacStop.reset(new sampling::ProsacTermination(n, buffer.sampleSize));
         buffer.prosac = prosac.get();
     }
-    std::unique_ptr<NapsacSampler> napsac;
+    std::unique_ptr<sampling::NapsacSampler> napsac;
     if (settings.napsacEvery > 0) {
-        napsac.reset(new NapsacSampler(problem.p1.data(), problem.p2.data(), n, buffer.sampleSize));
+        napsac.reset(new sampling::NapsacSampler(problem.p1.data(), problem.p2.data(), n,
+                                                 buffer.sampleSize));
         buffer.napsac = napsac.get();
         buffer.localEvery = settings.napsacEvery;
     }
     // SPRT checks the points in a random order (the data may be sorted, by PROSAC's quality or by
     // anything else): it scores a shuffled copy. Samples and local optimisation use `problem`.
     Problem shuffled;
-    const Problem* scoring = &problem;
+    const Problem* scoringPoints = &problem;
     if (settings.sprt) {
         // Its own generator, seeded from the search's without advancing it: the samples are then
         // the same with and without SPRT.
         RNG shuffleRng(rng.state ^ 0x9e3779b97f4a7c15ULL);
         shuffled = shuffledCopy(problem, shuffleRng);
-        scoring = &shuffled;
+        scoringPoints = &shuffled;
     }
-    Sprt sprt(kSprtHypothesisCost, kSprtInitialDelta);
-    const Scorer score{scoring, settings.scoreInFront};
-    LocalOptimisation lo(problem, solver, settings.lo, score, settings.sampleCheirality, rng.state,
-                         buffer.sampleSize);
+    scoring::Sprt sprt(kSprtHypothesisCost, kSprtInitialDelta);
+    const scoring::Scorer score{scoringPoints, settings.scoreInFront};
+    local_optimisation::LocalOptimisation lo(problem, solver, settings.lo, score,
+                                             settings.sampleCheirality, rng.state,
+                                             buffer.sampleSize);
     std::vector<uchar> mask; // PROSAC's termination length
     if (prosac) mask.resize(static_cast<size_t>(n));
-    LocalOptimisationCounters loCounters;
+    local_optimisation::LocalOptimisationCounters loCounters;
 
-    BestModel best;
-    CandidatePool pool;
+    local_optimisation::BestModel best;
+    local_optimisation::CandidatePool pool;
     // Until there is a model, the confidence cap: a search that has solved no sample by then has
     // degenerate data (coincident or collinear points), and the extended budget (settings.
     // minSampleCap) is only for data whose best model is weak, decided with the first model.
-    int needed = std::min(cap, sampleCap(settings.maxIters, solver.successRate()));
+    int needed = std::min(cap, termination::sampleCap(settings.maxIters, solver.successRate()));
 
     bool innerPending = false; // the best model waits for its inner samples
     auto localOptimise = [&]() {
         innerPending = lo.improveBest(result.iterations, rng, best, loCounters);
         result.addWork(loCounters);
-        loCounters = LocalOptimisationCounters();
+        loCounters = local_optimisation::LocalOptimisationCounters();
     };
 
     // The stopping rule for the current best model: the standard one on all points and, with
@@ -133,8 +135,8 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
         const double s = std::max(1e-3, solver.hitProbabilityAt(1.0, best.E));
         const double wMax =
             std::min(1.0, std::pow(1.0 / (s * confidenceCap), 1.0 / buffer.sampleSize));
-        const int inliersNeeded = significantInliers(best.E, problem, problem.inlierTest(),
-                                                     buffer.sampleSize, std::max(cap, 1));
+        const int inliersNeeded = degeneracy::significantInliers(
+            best.E, problem, problem.inlierTest(), buffer.sampleSize, std::max(cap, 1));
         extensionVerdict = inliersNeeded >= 0 && wMax * n >= inliersNeeded ? 1 : 0;
         return extensionVerdict == 1;
     };
@@ -146,22 +148,23 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
         const double p = solver.hitProbabilityAt(inlierRatio, best.E);
         auto rule = [&](double confidence) {
             return settings.sprt ? sprt.samplesNeeded(p, confidence, cap)
-                                 : requiredIterations(confidence, p, cap);
+                                 : termination::requiredIterations(confidence, p, cap);
         };
         const int need = rule(settings.confidence);
         const int confidenceCap =
-            sampleCap(settings.maxIters, solver.hitProbabilityAt(1.0, best.E));
+            termination::sampleCap(settings.maxIters, solver.hitProbabilityAt(1.0, best.E));
         if (settings.minSampleCap <= confidenceCap || need <= confidenceCap) return need;
         if (!extensionCanPay(confidenceCap)) return confidenceCap;
         return std::max(confidenceCap,
                         std::min(need, rule(std::min(settings.confidence, kExtendedConfidence))));
     };
     auto samplesNeeded = [&]() {
-        cap = limited(std::max(sampleCap(settings.maxIters, solver.hitProbabilityAt(1.0, best.E)),
-                               settings.minSampleCap));
+        cap = limited(std::max(
+            termination::sampleCap(settings.maxIters, solver.hitProbabilityAt(1.0, best.E)),
+            settings.minSampleCap));
         int need = stopRule(double(best.score.inliers) / n);
         if (!prosac || prosac->isUniform()) return need;
-        inlierMask(best.E, problem, problem.inlierTest(), mask.data());
+        scoring::inlierMask(best.E, problem, problem.inlierTest(), mask.data());
         const int from = std::max(prosac->poolSize(), prosacStop->minLength());
         int length = n, inliers = 0;
         for (int k = 0; k < n - 1; ++k) {
@@ -181,16 +184,17 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
     // Local samples in the extended budget: once the confidence cap is passed (the data are hard:
     // the stopping rule has not been met), every other sample is spatially local, built here so
     // that easy calls never pay for the grid.
-    const int confidenceCap = sampleCap(settings.maxIters, solver.successRate());
+    const int confidenceCap = termination::sampleCap(settings.maxIters, solver.successRate());
     while (result.iterations < needed) {
         if ((result.iterations & 7) == 7 && settings.deadline.passed()) break;
         if (settings.localSamplesInBudget && !napsac && result.iterations >= confidenceCap) {
-            napsac.reset(
-                new NapsacSampler(problem.p1.data(), problem.p2.data(), n, buffer.sampleSize));
+            napsac.reset(new sampling::NapsacSampler(problem.p1.data(), problem.p2.data(), n,
+                                                     buffer.sampleSize));
             buffer.napsac = napsac.get();
             buffer.localEvery = 2;
         }
-        if (innerPending && result.iterations >= LocalOptimisation::innerMinSamples()) {
+        if (innerPending &&
+            result.iterations >= local_optimisation::LocalOptimisation::innerMinSamples()) {
             localOptimise();
             if (settings.sprt)
                 sprt.accepted(double(best.score.inliers) / n,
@@ -205,17 +209,19 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
         result.hypothesesConverged += count;
         for (int h = 0; h < count; ++h) {
             ++result.hypothesesScored;
-            Score s;
+            scoring::Score s;
             // Scored exactly up to the pool's entry cost (within CandidatePool::kCostFactor of the
             // best), so that near-best models of another basin are kept (CandidatePool).
             const double bound =
                 lo.enabled()
-                    ? std::min(pool.entryCost(), CandidatePool::kCostFactor * best.score.cost)
+                    ? std::min(pool.entryCost(),
+                               local_optimisation::CandidatePool::kCostFactor * best.score.cost)
                     : best.score.cost;
             if (sprt.active()) {
                 bool rejected = false;
-                s = scoreMsacSprt(buffer.solutions[h], *scoring, scoring->inlierTest(), bound,
-                                  sprt.test(), rejected);
+                s = scoring::scoreMsacSprt(buffer.solutions[h], *scoringPoints,
+                                           scoringPoints->inlierTest(), bound, sprt.test(),
+                                           rejected);
                 result.pointsScored += s.scored;
                 if (rejected) {
                     ++result.sprtRejections;
@@ -245,13 +251,13 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
     if (lo.enabled() && result.found) {
         lo.polishRunnersUp(pool, rng, best, loCounters);
         result.addWork(loCounters);
-        loCounters = LocalOptimisationCounters();
+        loCounters = local_optimisation::LocalOptimisationCounters();
     }
     result.E = best.E;
     result.inliers = best.score.inliers;
     return result;
 }
 
-} // namespace ransac
+} // namespace search
 } // namespace essential
 } // namespace cv

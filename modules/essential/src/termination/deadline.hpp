@@ -9,7 +9,7 @@
 
 namespace cv {
 namespace essential {
-namespace ransac {
+namespace termination {
 
 /** A point in time after which a search returns what it has; inactive (never passed) by default.
 Reading the clock costs more than checking a point, so loops read it every few iterations, not
@@ -53,7 +53,7 @@ struct Deadline
     }
 };
 
-} // namespace ransac
+} // namespace termination
 } // namespace essential
 } // namespace cv
 

@@ -17,7 +17,7 @@
 
 namespace cv {
 namespace essential {
-namespace ransac {
+namespace termination {
 
 /** Cost models in microseconds of thread CPU time, linear in N, fitted to runs that reach the
 iteration cap (essential_opencv_time_model; the table and the fit are in docs/TUNING.md, "The
@@ -46,7 +46,7 @@ inline int opencvTimeSamples(int maxIters, int n)
     return samples > 1e9 ? 1000000000 : static_cast<int>(std::floor(samples));
 }
 
-} // namespace ransac
+} // namespace termination
 } // namespace essential
 } // namespace cv
 

@@ -10,7 +10,7 @@
 
 namespace cv {
 namespace essential {
-namespace ransac {
+namespace termination {
 
 /** Samples needed so that, with probability `confidence`, at least one sample gave the true model
 when each does so with probability `hitProbability` (EssentialSolver::hitProbability for the
@@ -38,7 +38,7 @@ inline int sampleCap(int maxIters, double solverSuccess)
     return cap > 1e9 ? 1000000000 : static_cast<int>(cap);
 }
 
-} // namespace ransac
+} // namespace termination
 } // namespace essential
 } // namespace cv
 

@@ -1,5 +1,7 @@
 # Type stubs of the cv_essential extension module (python/src/), for editors and type checkers.
 # python/tests/test_stubs.py checks that they name exactly the module's API.
+# The EssentialParams and EssentialReport classes are written by scripts/params_table.py from the
+# C++ structs in opencv2/essential/params.hpp.
 from typing import Callable, List, Optional, Sequence, Tuple, Union, overload
 
 import numpy as np
@@ -17,25 +19,25 @@ BUDGET_CONFIDENCE: int
 BUDGET_OPENCV_TIME: int
 
 class EssentialParams:
+    confidence: float
+    threshold: float
+    maxIterations: int
+    distance: int
+    seed: int
     solver: str
-    score: int
     engine: int
+    score: int
+    sampler: int
+    sprt: bool
+    sampleBudget: int
     timeBudgetMs: float
     preemptiveHypotheses: int
     preemptiveBlockSize: int
-    confidence: float
-    threshold: float
-    distance: int
-    maxIterations: int
-    sampleBudget: int
+    loIterations: int
+    loSampleSize: int
     budgetLocalSamples: bool
     planeParallax: bool
     inFrontCheck: bool
-    loIterations: int
-    loSampleSize: int
-    sampler: int
-    sprt: bool
-    seed: int
     refine: bool
     recoverPose: bool
     def __init__(self, **fields: object) -> None: ...

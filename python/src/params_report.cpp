@@ -22,30 +22,30 @@ namespace {
 using Params = cv::essential::EssentialParams;
 using Report = cv::essential::EssentialReport;
 
-/** Calls f(name, member pointer) for each field of EssentialParams in the header's order: the one
-list the Python attributes, keywords, repr and pickled state are made from
-(python/tests/test_params_report.py checks it against the header). */
+/** Calls f(name, member pointer) for each field of EssentialParams in the header's order: the list
+the Python attributes, keywords, repr and pickled state are made from. Its body is written by
+scripts/params_table.py from the header's struct. */
 template <class F> void forEachParamField(F&& f)
 {
+    f("confidence", &Params::confidence);
+    f("threshold", &Params::threshold);
+    f("maxIterations", &Params::maxIterations);
+    f("distance", &Params::distance);
+    f("seed", &Params::seed);
     f("solver", &Params::solver);
-    f("score", &Params::score);
     f("engine", &Params::engine);
+    f("score", &Params::score);
+    f("sampler", &Params::sampler);
+    f("sprt", &Params::sprt);
+    f("sampleBudget", &Params::sampleBudget);
     f("timeBudgetMs", &Params::timeBudgetMs);
     f("preemptiveHypotheses", &Params::preemptiveHypotheses);
     f("preemptiveBlockSize", &Params::preemptiveBlockSize);
-    f("confidence", &Params::confidence);
-    f("threshold", &Params::threshold);
-    f("distance", &Params::distance);
-    f("maxIterations", &Params::maxIterations);
-    f("sampleBudget", &Params::sampleBudget);
+    f("loIterations", &Params::loIterations);
+    f("loSampleSize", &Params::loSampleSize);
     f("budgetLocalSamples", &Params::budgetLocalSamples);
     f("planeParallax", &Params::planeParallax);
     f("inFrontCheck", &Params::inFrontCheck);
-    f("loIterations", &Params::loIterations);
-    f("loSampleSize", &Params::loSampleSize);
-    f("sampler", &Params::sampler);
-    f("sprt", &Params::sprt);
-    f("seed", &Params::seed);
     f("refine", &Params::refine);
     f("recoverPose", &Params::recoverPose);
 }
@@ -160,7 +160,8 @@ Params paramsFromKeywords(const py::dict& kwargs)
 }
 
 /** Calls f(name, member pointer) for each number of EssentialReport besides success, E, R and t,
-in the header's order: the one list the Python attributes and the pickled state are made from. */
+in the header's order: the list the Python attributes and the pickled state are made from. Its
+body is written by scripts/params_table.py from the header's struct. */
 template <class F> void forEachReportNumber(F&& f)
 {
     f("poseRecovered", &Report::poseRecovered);

@@ -69,6 +69,10 @@ findEssentialMatIter()).
 The defaults are those of the drop-in overloads, which behave like `cv::findEssentialMat` with
 `method = RANSAC`, `prob = 0.999`, `threshold = 1.0`, `maxIters = 1000`.
 
+The fields are grouped by the stage they set, in the pipeline's order: the drop-in's settings
+(what cv::findEssentialMat takes), the search, local optimisation, the hard-data levers, the final
+refinement and pose. docs/ARCHITECTURE.md names the source folder of each stage.
+
 Names and types follow cv::UsacParams wherever it has the same setting (`confidence`, `threshold`,
 `maxIterations`, `score`, `sampler`, `loIterations`, `loSampleSize`); the module's own settings use
 its own enums (EssentialEngine, EssentialDistance, EssentialSampleBudget). The seed is `seed`, a
@@ -84,16 +88,56 @@ module lacks to its nearest equivalent instead (the tables in the module descrip
 How the defaults were chosen, with the measurements and the commands that make them:
 docs/PARAMETERS.md.
 */
-// OpenCV's Python generator (modules/python/src2/hdr_parser.py of OpenCV 4.6, inside an OpenCV
-// build) cannot read member initialisers: it would take `int maxIterations = 1000;` for a field
-// named "maxIterations = 1000". It skips `#ifndef OPENCV_BINDING_PARSER` blocks and reads the
-// declaration in the `#ifdef OPENCV_BINDING_PARSER` block instead, which the compiler never sees:
-// the same struct with the binding macros and the fields without their defaults. Keep the two field
-// lists equal (modules/essential/misc/python/test/test_essential.py checks that cv2.essential has
-// them all).
+// The compiled structs below are the one table of the fields: scripts/params_table.py writes every
+// other copy of the list from them (the ctest entry params_table_is_current fails when a copy
+// differs). One copy is here: OpenCV's Python generator (modules/python/src2/hdr_parser.py of
+// OpenCV 4.6, inside an OpenCV build) cannot read member initialisers, it would take
+// `int maxIterations = 1000;` for a field named "maxIterations = 1000". It skips
+// `#ifndef OPENCV_BINDING_PARSER` blocks and reads the declaration in the
+// `#ifdef OPENCV_BINDING_PARSER` block instead, which the compiler never sees: the same struct with
+// the binding macros and the fields without their defaults.
 #ifndef OPENCV_BINDING_PARSER
 struct CV_EXPORTS EssentialParams
 {
+    /** @name The drop-in's settings
+    What cv::findEssentialMat takes (`prob`, `threshold`, `maxIters`), the distance the threshold
+    applies to (the USAC forms select OpenCV USAC's) and the seed (cv::UsacParams'
+    `randomGeneratorState`). */
+    //! @{
+
+    /** Required probability, in (0, 1), that at least one sample was outlier-free and solved.
+    Default 0.999. */
+    double confidence = 0.999;
+
+    /** Inlier threshold in pixels on `distance`, with pixels converted to normalised units by the
+    mean focal length (fx + fy) / 2, exactly as `cv::findEssentialMat`. Must be > 0. Default 1. */
+    double threshold = 1.0;
+
+    /** Iteration cap in OpenCV's units (cv::findEssentialMat's `maxIters`). Must be > 0. Default
+    1000. OpenCV's cap counts samples of a direct 5-point solver, each of which solves an
+    outlier-free sample; an iterative solver that reaches the true model on a fraction s of
+    outlier-free samples (EssentialSolver::hitProbabilityAt()) may draw up to maxIterations / s
+    samples, so that the confidence reached at the cap is the same. sampleBudget may raise the cap
+    further on hard data. */
+    int maxIterations = 1000;
+
+    /** The distance `threshold` applies to: DISTANCE_SAMPSON (default, as cv::findEssentialMat with
+    RANSAC or LMEDS) or DISTANCE_SYMMETRIC_EPIPOLAR (as OpenCV's USAC; the drop-in forms select it
+    for the USAC flags and the UsacParams form). Scoring, SPRT, local optimisation's inlier sets,
+    the support test and the mask use it; LMedS and the final refinement's robust cost always use
+    the Sampson distance. */
+    EssentialDistance distance = DISTANCE_SAMPSON;
+
+    /** Seed of the random generator: the same seed and input give the same result. */
+    uint64 seed = 0x6573736e7469616cULL;
+
+    //! @}
+
+    /** @name Search
+    Hypothesis generation, sampling, scoring and verification, and when the search stops
+    (src/sampling, src/solvers, src/scoring, src/search, src/termination). */
+    //! @{
+
     /** Name of a registered solver (see listSolvers()) or a composite such as "gn+nister" (see
     createSolver()). Default "nister": on real photographs (fields of view of 40 to 60 degrees) the
     iterative gn reaches the true model from a small fraction of outlier-free samples, and nister,
@@ -101,14 +145,37 @@ struct CV_EXPORTS EssentialParams
     and, on the paper's synthetic scenes, faster than gn and nister in turn (docs/REAL_PAIRS.md). */
     std::string solver = "nister";
 
+    /** The search loop: ENGINE_ADAPTIVE (default), ENGINE_PREEMPTIVE or ENGINE_OPENCV. */
+    EssentialEngine engine = ENGINE_ADAPTIVE;
+
     /** How hypotheses are scored: `cv::SCORE_METHOD_MSAC` (default; truncated Sampson error, what
     the drop-in forms run for `cv::RANSAC` and the USAC flags) or `cv::SCORE_METHOD_LMEDS` (least
     median of squared Sampson errors; the threshold is then derived from the data, as OpenCV does).
     SCORE_METHOD_RANSAC and SCORE_METHOD_MAGSAC raise StsNotImplemented. */
     ScoreMethod score = SCORE_METHOD_MSAC;
 
-    /** The search loop: ENGINE_ADAPTIVE (default), ENGINE_PREEMPTIVE or ENGINE_OPENCV. */
-    EssentialEngine engine = ENGINE_ADAPTIVE;
+    /** How samples are drawn:
+    - `cv::SAMPLING_UNIFORM` (default);
+    - `cv::SAMPLING_PROSAC`: progressive sampling from a growing pool of the best points (the
+      points must be sorted by quality, best first, as for OpenCV's USAC_PROSAC); ENGINE_ADAPTIVE;
+    - `cv::SAMPLING_NAPSAC`: every sample spatially local (a seed and four of its neighbours in
+      both images, on a 16 x 16 to 2 x 2 grid over each image);
+      `cv::SAMPLING_PROGRESSIVE_NAPSAC`: local and uniform samples in turn. Both need
+      ENGINE_ADAPTIVE with SCORE_METHOD_MSAC.
+    A sampler the chosen engine does not support raises StsNotImplemented. */
+    SamplingMethod sampler = SAMPLING_UNIFORM;
+
+    /** Verify hypotheses with Wald's sequential probability ratio test (Matas and Chum, R-RANSAC
+    with SPRT): the points are checked in a random order and a hypothesis is rejected as soon as
+    the likelihood ratio of "bad model" against "good model" exceeds a threshold; the stopping rule
+    accounts for the good models the test may reject. Used by ENGINE_ADAPTIVE with
+    SCORE_METHOD_MSAC; ignored otherwise. Default on. */
+    bool sprt = true;
+
+    /** The sample cap of ENGINE_ADAPTIVE with SCORE_METHOD_MSAC: BUDGET_OPENCV_TIME (default) or
+    BUDGET_CONFIDENCE. LMedS draws OpenCV's fixed number of samples, and ENGINE_PREEMPTIVE and
+    ENGINE_OPENCV have their own budgets; they ignore it. */
+    EssentialSampleBudget sampleBudget = BUDGET_OPENCV_TIME;
 
     /** Time budget of the whole call in milliseconds; 0 (default) or +inf for none. With a budget
     the search returns the best model found when the time left is what the final refinement needs
@@ -125,33 +192,31 @@ struct CV_EXPORTS EssentialParams
     /** ENGINE_PREEMPTIVE: block size B, the points scored between two halvings. Default 100. */
     int preemptiveBlockSize = 100;
 
-    /** Required probability, in (0, 1), that at least one sample was outlier-free and solved.
-    Default 0.999. */
-    double confidence = 0.999;
+    //! @}
 
-    /** Inlier threshold in pixels on `distance`, with pixels converted to normalised units by the
-    mean focal length (fx + fy) / 2, exactly as `cv::findEssentialMat`. Must be > 0. Default 1. */
-    double threshold = 1.0;
+    /** @name Local optimisation
+    Polishing each new best hypothesis of the adaptive MSAC engine (src/local_optimisation). */
+    //! @{
 
-    /** The distance `threshold` applies to: DISTANCE_SAMPSON (default, as cv::findEssentialMat with
-    RANSAC or LMEDS) or DISTANCE_SYMMETRIC_EPIPOLAR (as OpenCV's USAC; the drop-in forms select it
-    for the USAC flags and the UsacParams form). Scoring, SPRT, local optimisation's inlier sets,
-    the support test and the mask use it; LMedS and the final refinement's robust cost always use
-    the Sampson distance. */
-    EssentialDistance distance = DISTANCE_SAMPSON;
+    /** Local optimisation (LO) in the adaptive MSAC engine: each new best hypothesis is polished
+    by this many IRLS iterations (Levenberg-Marquardt on Cauchy-weighted Sampson residuals) on the
+    points within 2 thresholds of it, and kept when its MSAC cost on all points is lower; a best
+    model supported by less than half of the points first gets 10 inner samples among its
+    neighbours (LO-RANSAC's inner RANSAC). 0 disables LO. Ignored by LMedS, ENGINE_PREEMPTIVE and
+    ENGINE_OPENCV. Must be >= 0. Default 5. */
+    int loIterations = 5;
 
-    /** Iteration cap in OpenCV's units (cv::findEssentialMat's `maxIters`). Must be > 0. Default
-    1000. OpenCV's cap counts samples of a direct 5-point solver, each of which solves an
-    outlier-free sample; an iterative solver that reaches the true model on a fraction s of
-    outlier-free samples (EssentialSolver::hitProbabilityAt()) may draw up to maxIterations / s
-    samples, so that the confidence reached at the cap is the same. sampleBudget may raise the cap
-    further on hard data. */
-    int maxIterations = 1000;
+    /** LO on a random subset of this many of the model's inliers; 0 (default): on all of them.
+    Must be 0 or >= 5 (IRLS fits five degrees of freedom). */
+    int loSampleSize = 0;
 
-    /** The sample cap of ENGINE_ADAPTIVE with SCORE_METHOD_MSAC: BUDGET_OPENCV_TIME (default) or
-    BUDGET_CONFIDENCE. LMedS draws OpenCV's fixed number of samples, and ENGINE_PREEMPTIVE and
-    ENGINE_OPENCV have their own budgets; they ignore it. */
-    EssentialSampleBudget sampleBudget = BUDGET_OPENCV_TIME;
+    //! @}
+
+    /** @name Hard-data levers
+    What the adaptive MSAC engine does when the data are hard: local samples in the extended budget,
+    the plane-and-parallax and in-front checks (src/termination, src/degeneracy, src/scoring;
+    docs/HARD_PAIRS.md). */
+    //! @{
 
     /** With BUDGET_OPENCV_TIME and the uniform sampler: once the samples pass the confidence cap,
     every other sample is spatially local, as SAMPLING_PROGRESSIVE_NAPSAC draws them (a seed and
@@ -177,38 +242,11 @@ struct CV_EXPORTS EssentialParams
     the winner is clean (2.5% more CPU time in all on the real pairs). Default on. */
     bool inFrontCheck = true;
 
-    /** Local optimisation (LO) in the adaptive MSAC engine: each new best hypothesis is polished
-    by this many IRLS iterations (Levenberg-Marquardt on Cauchy-weighted Sampson residuals) on the
-    points within 2 thresholds of it, and kept when its MSAC cost on all points is lower; a best
-    model supported by less than half of the points first gets 10 inner samples among its
-    neighbours (LO-RANSAC's inner RANSAC). 0 disables LO. Ignored by LMedS, ENGINE_PREEMPTIVE and
-    ENGINE_OPENCV. Must be >= 0. Default 5. */
-    int loIterations = 5;
+    //! @}
 
-    /** LO on a random subset of this many of the model's inliers; 0 (default): on all of them.
-    Must be 0 or >= 5 (IRLS fits five degrees of freedom). */
-    int loSampleSize = 0;
-
-    /** How samples are drawn:
-    - `cv::SAMPLING_UNIFORM` (default);
-    - `cv::SAMPLING_PROSAC`: progressive sampling from a growing pool of the best points (the
-      points must be sorted by quality, best first, as for OpenCV's USAC_PROSAC); ENGINE_ADAPTIVE;
-    - `cv::SAMPLING_NAPSAC`: every sample spatially local (a seed and four of its neighbours in
-      both images, on a 16 x 16 to 2 x 2 grid over each image);
-      `cv::SAMPLING_PROGRESSIVE_NAPSAC`: local and uniform samples in turn. Both need
-      ENGINE_ADAPTIVE with SCORE_METHOD_MSAC.
-    A sampler the chosen engine does not support raises StsNotImplemented. */
-    SamplingMethod sampler = SAMPLING_UNIFORM;
-
-    /** Verify hypotheses with Wald's sequential probability ratio test (Matas and Chum, R-RANSAC
-    with SPRT): the points are checked in a random order and a hypothesis is rejected as soon as
-    the likelihood ratio of "bad model" against "good model" exceeds a threshold; the stopping rule
-    accounts for the good models the test may reject. Used by ENGINE_ADAPTIVE with
-    SCORE_METHOD_MSAC; ignored otherwise. Default on. */
-    bool sprt = true;
-
-    /** Seed of the random generator: the same seed and input give the same result. */
-    uint64 seed = 0x6573736e7469616cULL;
+    /** @name Final refinement and pose
+    What happens to the search's winner (src/refine, src/pose). */
+    //! @{
 
     /** Refine the best hypothesis by iteratively reweighted least squares (IRLS) with
     Levenberg-Marquardt in the 5-DOF parameterisation (Tukey's biweight at a scale that follows the
@@ -219,31 +257,33 @@ struct CV_EXPORTS EssentialParams
     /** When a report is requested: also decompose E into R and t (with the cheirality test of
     recoverPoseIter()) and store them in the report. Default on. */
     bool recoverPose = true;
+
+    //! @}
 };
 #endif
 #ifdef OPENCV_BINDING_PARSER
 struct CV_EXPORTS_W_SIMPLE EssentialParams
 {
     CV_WRAP EssentialParams();
+    CV_PROP_RW double confidence;
+    CV_PROP_RW double threshold;
+    CV_PROP_RW int maxIterations;
+    CV_PROP_RW EssentialDistance distance;
+    CV_PROP_RW uint64 seed;
     CV_PROP_RW std::string solver;
-    CV_PROP_RW ScoreMethod score;
     CV_PROP_RW EssentialEngine engine;
+    CV_PROP_RW ScoreMethod score;
+    CV_PROP_RW SamplingMethod sampler;
+    CV_PROP_RW bool sprt;
+    CV_PROP_RW EssentialSampleBudget sampleBudget;
     CV_PROP_RW double timeBudgetMs;
     CV_PROP_RW int preemptiveHypotheses;
     CV_PROP_RW int preemptiveBlockSize;
-    CV_PROP_RW double confidence;
-    CV_PROP_RW double threshold;
-    CV_PROP_RW EssentialDistance distance;
-    CV_PROP_RW int maxIterations;
-    CV_PROP_RW EssentialSampleBudget sampleBudget;
+    CV_PROP_RW int loIterations;
+    CV_PROP_RW int loSampleSize;
     CV_PROP_RW bool budgetLocalSamples;
     CV_PROP_RW bool planeParallax;
     CV_PROP_RW bool inFrontCheck;
-    CV_PROP_RW int loIterations;
-    CV_PROP_RW int loSampleSize;
-    CV_PROP_RW SamplingMethod sampler;
-    CV_PROP_RW bool sprt;
-    CV_PROP_RW uint64 seed;
     CV_PROP_RW bool refine;
     CV_PROP_RW bool recoverPose;
 };

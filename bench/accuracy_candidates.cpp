@@ -78,6 +78,7 @@ only). */
 struct Input
 {
     const ce::Problem* problem;
+    double threshold; //!< the inlier threshold on the Sampson distance, normalised
     cv::Matx33d searchE;
     const essential_test::SyntheticScene* scene;
 };
@@ -90,19 +91,13 @@ struct Output
 
 ce::Problem subset(const ce::Problem& p, const std::vector<uchar>& mask)
 {
-    std::vector<cv::Point2d> a, b;
-    for (int i = 0; i < p.size(); ++i)
-        if (mask[i]) {
-            a.push_back(p.p1[i]);
-            b.push_back(p.p2[i]);
-        }
-    return ce::makeProblem(a, b, p.threshold);
+    return ce::maskedProblem(p, mask.data());
 }
 
 std::vector<uchar> inliersOf(const cv::Matx33d& E, const ce::Problem& p, double threshold)
 {
     std::vector<uchar> mask(static_cast<size_t>(p.size()));
-    ce::scoring::inlierMask(E, p, p.inlierTest().withThreshold(threshold), mask.data());
+    ce::scoring::inlierMask(E, p, ce::InlierTest{threshold}, mask.data());
     return mask;
 }
 
@@ -111,8 +106,7 @@ std::vector<uchar> inliersInFront(const cv::Matx33d& E, const ce::Problem& p, do
 {
     std::vector<uchar> mask = inliersOf(E, p, threshold);
     ce::pose::PoseResult pr;
-    ce::pose::recoverPoseNormalised(E, p.p1.data(), p.p2.data(), p.size(), mask.data(), mask.data(),
-                                    pr);
+    ce::pose::recoverPoseNormalised(E, p, mask.data(), mask.data(), pr);
     return mask;
 }
 
@@ -137,13 +131,14 @@ Output current(const Input& in)
     const ce::Problem& p = *in.problem;
     Output o;
     o.E = in.searchE;
-    const auto r = ce::refine::refineIrls(p, in.searchE, 0.5 * p.threshold);
+    const auto r = ce::refine::refineIrls(p, in.searchE, 0.5 * in.threshold);
     if (r.improved) {
-        const double before = ce::scoring::scoreMsac(in.searchE, p, p.inlierTest()).cost;
-        const double after = ce::scoring::scoreMsac(r.E, p, p.inlierTest()).cost;
+        const double before =
+            ce::scoring::scoreMsac(in.searchE, p, ce::InlierTest{in.threshold}).cost;
+        const double after = ce::scoring::scoreMsac(r.E, p, ce::InlierTest{in.threshold}).cost;
         if (after <= 1.05 * before) o.E = r.E;
     }
-    o.mask = inliersOf(o.E, p, p.threshold);
+    o.mask = inliersOf(o.E, p, in.threshold);
     return o;
 }
 
@@ -155,7 +150,7 @@ Output onPoints(const Input& in, const std::vector<uchar>& use, double scale,
     Output o;
     const auto r = ce::refine::refineIrls(subset(p, use), in.searchE, scale, s);
     o.E = r.improved ? r.E : in.searchE;
-    o.mask = inliersOf(o.E, p, p.threshold);
+    o.mask = inliersOf(o.E, p, in.threshold);
     return o;
 }
 
@@ -171,15 +166,15 @@ int main(int argc, char** argv)
     candidates.push_back({"search winner, no refinement", [](const Input& in) {
                               Output o;
                               o.E = in.searchE;
-                              o.mask = inliersOf(o.E, *in.problem, in.problem->threshold);
+                              o.mask = inliersOf(o.E, *in.problem, in.threshold);
                               return o;
                           }});
     candidates.push_back({"before: all points, Cauchy 0.5 thr, 20 it, tol 1e-6", current});
     candidates.push_back(
         {"after: refineFinal (library)", [](const Input& in) {
              Output o;
-             o.E = ce::refine::refineFinal(*in.problem, in.searchE, in.problem->threshold).E;
-             o.mask = inliersOf(o.E, *in.problem, in.problem->threshold);
+             o.E = ce::refine::refineFinal(*in.problem, in.searchE, ce::InlierTest{in.threshold}).E;
+             o.mask = inliersOf(o.E, *in.problem, in.threshold);
              return o;
          }});
     // The library's final stage with other settings.
@@ -215,63 +210,62 @@ int main(int argc, char** argv)
         {"final: library default", 4, 2, 4, 1, 2, -1, 4.685, 0},
     };
     for (const FinalVariant& v : finals)
-        candidates.push_back(
-            {v.name, [v](const Input& in) {
-                 ce::refine::FinalRefinementSettings fs;
-                 fs.noiseWindow = v.window;
-                 fs.minBand = v.minBand;
-                 fs.bandInSigmas = v.bandSigmas;
-                 fs.minScale = v.minScale;
-                 fs.scaleInSigmas = v.scaleSigmas;
-                 if (v.rounds > 0) { // else the library's rule
-                     fs.maxRounds = v.rounds;
-                     fs.nextRoundBelow = 1e300; // every round runs
-                 }
-                 fs.tukeyInSigmas = v.tukey;
-                 fs.firstTukeyRound = v.firstTukey;
-                 Output o;
-                 o.E =
-                     ce::refine::refineFinal(*in.problem, in.searchE, in.problem->threshold, fs).E;
-                 o.mask = inliersOf(o.E, *in.problem, in.problem->threshold);
-                 return o;
-             }});
+        candidates.push_back({v.name, [v](const Input& in) {
+                                  ce::refine::FinalRefinementSettings fs;
+                                  fs.noiseWindow = v.window;
+                                  fs.minBand = v.minBand;
+                                  fs.bandInSigmas = v.bandSigmas;
+                                  fs.minScale = v.minScale;
+                                  fs.scaleInSigmas = v.scaleSigmas;
+                                  if (v.rounds > 0) { // else the library's rule
+                                      fs.maxRounds = v.rounds;
+                                      fs.nextRoundBelow = 1e300; // every round runs
+                                  }
+                                  fs.tukeyInSigmas = v.tukey;
+                                  fs.firstTukeyRound = v.firstTukey;
+                                  Output o;
+                                  o.E = ce::refine::refineFinal(*in.problem, in.searchE,
+                                                                ce::InlierTest{in.threshold}, fs)
+                                            .E;
+                                  o.mask = inliersOf(o.E, *in.problem, in.threshold);
+                                  return o;
+                              }});
     candidates.push_back({"all points, Cauchy 0.5 thr, 100 it, tol 1e-12", [](const Input& in) {
                               std::vector<uchar> all(in.problem->size(), 1);
-                              return onPoints(in, all, 0.5 * in.problem->threshold,
-                                              irls(100, 1e-12));
+                              return onPoints(in, all, 0.5 * in.threshold, irls(100, 1e-12));
                           }});
     candidates.push_back({"all points, Cauchy 1 thr, 100 it, tol 1e-12", [](const Input& in) {
                               std::vector<uchar> all(in.problem->size(), 1);
-                              return onPoints(in, all, in.problem->threshold, irls(100, 1e-12));
+                              return onPoints(in, all, in.threshold, irls(100, 1e-12));
                           }});
     candidates.push_back({"inliers, Cauchy 0.5 thr, 20 it, tol 1e-6", [](const Input& in) {
-                              const double t = in.problem->threshold;
+                              const double t = in.threshold;
                               return onPoints(in, inliersOf(in.searchE, *in.problem, t), 0.5 * t,
                                               irls(20, 1e-6));
                           }});
     candidates.push_back({"inliers, Cauchy 0.5 thr, 100 it, tol 1e-12", [](const Input& in) {
-                              const double t = in.problem->threshold;
+                              const double t = in.threshold;
                               return onPoints(in, inliersOf(in.searchE, *in.problem, t), 0.5 * t,
                                               irls(100, 1e-12));
                           }});
     candidates.push_back({"inliers, Cauchy 1 thr, 100 it, tol 1e-12", [](const Input& in) {
-                              const double t = in.problem->threshold;
+                              const double t = in.threshold;
                               return onPoints(in, inliersOf(in.searchE, *in.problem, t), t,
                                               irls(100, 1e-12));
                           }});
     candidates.push_back({"inliers, least squares, 100 it, tol 1e-12", [](const Input& in) {
-                              const double t = in.problem->threshold;
+                              const double t = in.threshold;
                               return onPoints(in, inliersOf(in.searchE, *in.problem, t), 1e3 * t,
                                               irls(100, 1e-12));
                           }});
     candidates.push_back(
         {"inliers in front, Cauchy 1 thr, 100 it, tol 1e-12 (PoseLib's)", [](const Input& in) {
-             const double t = in.problem->threshold;
+             const double t = in.threshold;
              return onPoints(in, inliersInFront(in.searchE, *in.problem, t), t, irls(100, 1e-12));
          }});
     candidates.push_back(
         {"inliers, Cauchy 1 thr, 100 it, then re-selected inliers again", [](const Input& in) {
-             const double t = in.problem->threshold;
+             const double t = in.threshold;
              Output first =
                  onPoints(in, inliersOf(in.searchE, *in.problem, t), t, irls(100, 1e-12));
              Input again = in;
@@ -282,7 +276,7 @@ int main(int argc, char** argv)
     // `scale` thresholds, `rounds` times (each round re-selects the points around the last result).
     auto banded = [](double band, double scale, int rounds, bool inFront) {
         return [=](const Input& in) {
-            const double t = in.problem->threshold;
+            const double t = in.threshold;
             Input cur = in;
             Output o;
             for (int r = 0; r < rounds; ++r) {
@@ -312,7 +306,7 @@ int main(int argc, char** argv)
             std::snprintf(name, sizeof name,
                           "stop: within 2 thr in front, Cauchy 1 thr, cap %d, tol %.0e", cap, tol);
             candidates.push_back({name, [cap, tol](const Input& in) {
-                                      const double t = in.problem->threshold;
+                                      const double t = in.threshold;
                                       return onPoints(
                                           in, inliersInFront(in.searchE, *in.problem, 2 * t), t,
                                           irls(cap, tol));
@@ -326,16 +320,16 @@ int main(int argc, char** argv)
                                   std::vector<uchar> truth(in.problem->size());
                                   for (int i = 0; i < in.problem->size(); ++i)
                                       truth[i] = in.scene->inlier[i] ? 1 : 0;
-                                  return onPoints(in, truth, scale * in.problem->threshold,
+                                  return onPoints(in, truth, scale * in.threshold,
                                                   irls(100, 1e-12));
                               }});
     }
     candidates.push_back(
         {"oracle selection: true inliers within 3 thr, Cauchy 0.5 thr", [](const Input& in) {
-             std::vector<uchar> use = inliersOf(in.searchE, *in.problem, 3 * in.problem->threshold);
+             std::vector<uchar> use = inliersOf(in.searchE, *in.problem, 3 * in.threshold);
              for (int i = 0; i < in.problem->size(); ++i)
                  use[i] = use[i] && in.scene->inlier[i];
-             return onPoints(in, use, 0.5 * in.problem->threshold, irls(100, 1e-12));
+             return onPoints(in, use, 0.5 * in.threshold, irls(100, 1e-12));
          }});
     candidates.push_back(
         {"oracle: true inliers, least squares, from the truth", [](const Input& in) {
@@ -344,7 +338,7 @@ int main(int argc, char** argv)
                  truth[i] = in.scene->inlier[i] ? 1 : 0;
              Input fromTruth = in;
              fromTruth.searchE = in.scene->E;
-             return onPoints(fromTruth, truth, 1e3 * in.problem->threshold, irls(100, 1e-12));
+             return onPoints(fromTruth, truth, 1e3 * in.threshold, irls(100, 1e-12));
          }});
 
     if (!args.only.empty()) {
@@ -375,7 +369,8 @@ int main(int argc, char** argv)
             cfg.inlierRatio = ratio;
             const auto s = essential_test::makeScene(cfg, args.seed * 1000003ULL + p);
             const double f = cfg.focal;
-            const ce::Problem problem = ce::makeProblem(s.x1, s.x2, args.threshold / f);
+            const ce::Problem problem = ce::makeProblem(s.x1, s.x2);
+            const double threshold = args.threshold / f;
 
             ce::EssentialParams params;
             cv::Ptr<ce::EssentialSolver> solver = ce::createSolver(params.solver);
@@ -384,7 +379,8 @@ int main(int argc, char** argv)
             settings.confidence = params.confidence;
             settings.maxIters = args.maxIters;
             settings.lo.iterations = args.lo;
-            settings.lo.scale = args.loScale * problem.threshold;
+            settings.test.threshold = threshold;
+            settings.lo.scale = args.loScale * threshold;
             settings.lo.band = args.loBand;
             settings.sprt = params.sprt;
             const double s0 = threadCpuMs();
@@ -396,11 +392,10 @@ int main(int argc, char** argv)
                 PoseOutcome o;
                 if (found.found) {
                     const double t0 = threadCpuMs();
-                    const Output out = candidates[c].run({&problem, found.E, &s});
+                    const Output out = candidates[c].run({&problem, threshold, found.E, &s});
                     o.ms = threadCpuMs() - t0;
                     ce::pose::PoseResult pr;
-                    if (ce::pose::recoverPoseNormalised(out.E, problem.p1.data(), problem.p2.data(),
-                                                        problem.size(), out.mask.data(), nullptr,
+                    if (ce::pose::recoverPoseNormalised(out.E, problem, out.mask.data(), nullptr,
                                                         pr)) {
                         o.rotErr = essential_test::rotationErrorDeg(pr.R, s.R);
                         o.transErr = essential_test::translationErrorDeg(pr.t, s.t);

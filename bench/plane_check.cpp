@@ -69,13 +69,14 @@ int main(int argc, char** argv)
             const cv::Mat E = cv::essential::findEssentialMatIter(s.px1, s.px2, s.K, params, mask);
             if (E.empty()) continue;
             const double f = 0.5 * (s.K(0, 0) + s.K(1, 1));
-            const cv::essential::Problem problem = cv::essential::makeProblem(s.x1, s.x2, 1.0 / f);
+            const cv::essential::Problem problem = cv::essential::makeProblem(s.x1, s.x2);
+            const cv::essential::InlierTest test{1.0 / f};
             const cv::Matx33d Em(E);
             const cv::essential::scoring::Score score =
-                cv::essential::scoring::scoreMsac(Em, problem, problem.inlierTest());
+                cv::essential::scoring::scoreMsac(Em, problem, test);
             cv::RNG rng(static_cast<uint64>(k));
             const cv::essential::degeneracy::PlaneParallaxResult r =
-                cv::essential::degeneracy::checkPlaneAndParallax(problem, Em, score, rng);
+                cv::essential::degeneracy::checkPlaneAndParallax(problem, test, Em, score, rng);
             const bool r0 = right(Em, s), r1 = r.improved ? right(r.E, s) : r0;
             found += r.planeFound;
             replaced += r.improved;

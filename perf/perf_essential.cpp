@@ -69,7 +69,10 @@ BENCHMARK_CAPTURE(BM_Solver, nister, "nister")->Unit(benchmark::kNanosecond);
 BENCHMARK_CAPTURE(BM_Solver, robust, "robust")->Unit(benchmark::kNanosecond);
 BENCHMARK_CAPTURE(BM_Solver, gn_nister, "gn+nister")->Unit(benchmark::kNanosecond);
 
-/** A normalised problem of N points, 50% inliers, threshold 1 px at focal 500. */
+/** The scoring benchmarks' inlier test: 1 px at the scenes' focal length (500). */
+const cv::essential::InlierTest kScoringTest{1.0 / essential_test::SceneConfig().focal};
+
+/** A normalised problem of N points, 50% inliers, focal 500. */
 cv::essential::Problem scoringProblem(int n, cv::Matx33d& E)
 {
     essential_test::SceneConfig cfg;
@@ -77,7 +80,7 @@ cv::essential::Problem scoringProblem(int n, cv::Matx33d& E)
     cfg.inlierRatio = 0.5;
     const auto s = essential_test::makeScene(cfg, 7);
     E = s.E;
-    return cv::essential::makeProblem(s.x1, s.x2, 1.0 / cfg.focal);
+    return cv::essential::makeProblem(s.x1, s.x2);
 }
 
 /** Full MSAC score of the true E on all N points (no early exit). Counter: ns_per_point. */
@@ -86,7 +89,7 @@ void BM_ScoreMsac(benchmark::State& state)
     cv::Matx33d E;
     const cv::essential::Problem problem = scoringProblem(int(state.range(0)), E);
     for (auto _ : state) {
-        auto score = cv::essential::scoring::scoreMsac(E, problem, problem.inlierTest());
+        auto score = cv::essential::scoring::scoreMsac(E, problem, kScoringTest);
         benchmark::DoNotOptimize(score);
     }
     state.counters["ns_per_point"] = nsPer(double(state.iterations()) * double(state.range(0)));
@@ -103,8 +106,8 @@ void BM_ScoreSprt(benchmark::State& state)
     test.logOut = 0.1;
     bool rejected = false;
     for (auto _ : state) {
-        auto score = cv::essential::scoring::scoreMsacSprt(E, problem, problem.inlierTest(),
-                                                           HUGE_VAL, test, rejected);
+        auto score = cv::essential::scoring::scoreMsacSprt(E, problem, kScoringTest, HUGE_VAL, test,
+                                                           rejected);
         benchmark::DoNotOptimize(score);
     }
     state.counters["ns_per_point"] = nsPer(double(state.iterations()) * double(state.range(0)));
@@ -117,8 +120,7 @@ void BM_InlierMask(benchmark::State& state)
     const cv::essential::Problem problem = scoringProblem(int(state.range(0)), E);
     std::vector<uchar> mask(problem.x1.size());
     for (auto _ : state) {
-        auto count =
-            cv::essential::scoring::inlierMask(E, problem, problem.inlierTest(), mask.data());
+        auto count = cv::essential::scoring::inlierMask(E, problem, kScoringTest, mask.data());
         benchmark::DoNotOptimize(count);
     }
     state.counters["ns_per_point"] = nsPer(double(state.iterations()) * double(state.range(0)));
@@ -134,11 +136,11 @@ void BM_RefineIrls(benchmark::State& state)
     cfg.numPoints = n;
     cfg.inlierRatio = 0.9;
     const auto s = essential_test::makeScene(cfg, 11);
-    const auto problem = cv::essential::makeProblem(s.x1, s.x2, 1.0 / cfg.focal);
+    const auto problem = cv::essential::makeProblem(s.x1, s.x2);
     const cv::Matx33d E0 = s.E * essential_test::axisAngle(cv::Vec3d(0, 0.6, 0.8), 0.01);
     int64_t iterations = 0;
     for (auto _ : state) {
-        auto r = cv::essential::refine::refineIrls(problem, E0, 0.5 * problem.threshold);
+        auto r = cv::essential::refine::refineIrls(problem, E0, 0.5 / cfg.focal);
         iterations += r.iterations;
         benchmark::DoNotOptimize(r.E);
     }

@@ -17,10 +17,8 @@
 
 namespace essential_test {
 
-/** The scene's normalised points as a Problem with the given threshold, all of them or only the
-inliers. */
-inline cv::essential::Problem problemOf(const SyntheticScene& s, double threshold,
-                                        bool inliersOnly = false)
+/** The scene's normalised points as a Problem, all of them or only the inliers. */
+inline cv::essential::Problem problemOf(const SyntheticScene& s, bool inliersOnly = false)
 {
     std::vector<cv::Point2d> a, b;
     for (size_t i = 0; i < s.x1.size(); ++i)
@@ -28,7 +26,7 @@ inline cv::essential::Problem problemOf(const SyntheticScene& s, double threshol
             a.push_back(s.x1[i]);
             b.push_back(s.x2[i]);
         }
-    return cv::essential::makeProblem(a, b, threshold);
+    return cv::essential::makeProblem(a, b);
 }
 
 /** The true pose moved by a rotation of `rotDeg` about a random axis and a translation direction

@@ -39,8 +39,8 @@ TEST(FinalRefinement, EstimatesTheNoiseOfTheInliers)
                 cfg.noiseSigma = noisePx / cfg.focal;
                 const SyntheticScene s = makeScene(cfg, seed);
                 const double threshold = 1.0 / cfg.focal;
-                const double sigma = cv::essential::refine::estimateNoise(problemOf(s, threshold),
-                                                                          s.E, threshold, 4.0, 20);
+                const double sigma =
+                    cv::essential::refine::estimateNoise(problemOf(s), s.E, threshold, 4.0, 20);
                 EXPECT_GT(sigma, 0.9 * cfg.noiseSigma) << noisePx << " px, seed " << seed;
                 EXPECT_LT(sigma, 1.25 * cfg.noiseSigma) << noisePx << " px, seed " << seed;
             }
@@ -61,10 +61,10 @@ TEST(FinalRefinement, TakesOutTheOutliersPull)
     for (uint64_t seed = 1; seed <= 10; ++seed) {
         const SyntheticScene s = makeScene(cfg, seed);
         const double threshold = 1.0 / cfg.focal;
-        const auto all =
-            cv::essential::refine::refineFinal(problemOf(s, threshold), s.E, threshold);
-        const auto clean =
-            cv::essential::refine::refineFinal(problemOf(s, threshold, true), s.E, threshold);
+        const auto all = cv::essential::refine::refineFinal(problemOf(s), s.E,
+                                                            cv::essential::InlierTest{threshold});
+        const auto clean = cv::essential::refine::refineFinal(problemOf(s, true), s.E,
+                                                              cv::essential::InlierTest{threshold});
         EXPECT_TRUE(all.improved);
         const bool wrongMatchesUsed = all.pointsUsed > clean.pointsUsed;
         contaminated += wrongMatchesUsed;
@@ -89,12 +89,14 @@ TEST(FinalRefinement, ConvergesFromPerturbedStarts)
     for (uint64_t seed = 1; seed <= 10; ++seed) {
         const SyntheticScene s = makeScene(cfg, seed);
         const double threshold = 1.0 / cfg.focal;
-        const cv::essential::Problem problem = problemOf(s, threshold);
-        const auto fromTruth = cv::essential::refine::refineFinal(problem, s.E, threshold);
+        const cv::essential::Problem problem = problemOf(s);
+        const auto fromTruth =
+            cv::essential::refine::refineFinal(problem, s.E, cv::essential::InlierTest{threshold});
         for (double rot : {0.1, 0.2, 0.3}) {
             const cv::Matx33d start = perturbed(s, rot, 3.0 * rot, seed);
             ASSERT_GT(essentialDistance(start, s.E), 2e-3);
-            const auto r = cv::essential::refine::refineFinal(problem, start, threshold);
+            const auto r = cv::essential::refine::refineFinal(problem, start,
+                                                              cv::essential::InlierTest{threshold});
             const double d = essentialDistance(r.E, fromTruth.E);
             ++runs;
             agree += d < 1e-3;
@@ -147,9 +149,10 @@ TEST(FinalRefinement, TooFewPointsNearTheStartLeaveItUnchanged)
     cfg.numPoints = 40;
     cfg.noiseSigma = 0.0;
     const SyntheticScene s = makeScene(cfg, 3);
-    const cv::essential::Problem problem = problemOf(s, 1.0 / cfg.focal);
+    const cv::essential::Problem problem = problemOf(s);
     const cv::Matx33d far = perturbed(s, 30.0, 60.0, 3);
-    const auto r = cv::essential::refine::refineFinal(problem, far, 1e-9);
+    const auto r =
+        cv::essential::refine::refineFinal(problem, far, cv::essential::InlierTest{1e-9});
     EXPECT_FALSE(r.improved);
     EXPECT_EQ(cv::norm(r.E - far), 0.0);
 }

@@ -40,7 +40,7 @@ TEST(NapsacSampler, SamplesAreDistinctAndStayInOneCluster)
         p1.emplace_back(base + 0.1 * gen.uniform(0.0, 1.0), base + 0.1 * gen.uniform(0.0, 1.0));
         p2.emplace_back(base + 0.1 * gen.uniform(0.0, 1.0), base + 0.1 * gen.uniform(0.0, 1.0));
     }
-    cv::essential::sampling::NapsacSampler sampler(p1.data(), p2.data(), 200, 5);
+    cv::essential::sampling::NapsacSampler sampler(cv::essential::makeProblem(p1, p2), 5);
     cv::RNG rng(11);
     int idx[5];
     for (int k = 0; k < 2000; ++k) {
@@ -66,7 +66,7 @@ TEST(NapsacSampler, LocalSamplesAreSmallerThanUniformOnes)
         p1.emplace_back(gen.uniform(0.0, 1.0), gen.uniform(0.0, 1.0));
         p2.emplace_back(p1.back().x + gen.uniform(-0.05, 0.05), p1.back().y);
     }
-    cv::essential::sampling::NapsacSampler sampler(p1.data(), p2.data(), n, 5);
+    cv::essential::sampling::NapsacSampler sampler(cv::essential::makeProblem(p1, p2), 5);
     cv::RNG rng(2);
     std::vector<double> local, uniform;
     int idx[5];
@@ -91,7 +91,7 @@ TEST(NapsacSampler, RefusesWhenNoCellHoldsASample)
 {
     // Four points in four corners (in both images): no cell at any level holds five.
     const std::vector<cv::Point2d> p = {{0, 0}, {1, 0}, {0, 1}, {1, 1}};
-    cv::essential::sampling::NapsacSampler sampler(p.data(), p.data(), 4, 5);
+    cv::essential::sampling::NapsacSampler sampler(cv::essential::makeProblem(p, p), 5);
     cv::RNG rng(1);
     int idx[5];
     EXPECT_FALSE(sampler.draw(rng, idx));
@@ -99,11 +99,16 @@ TEST(NapsacSampler, RefusesWhenNoCellHoldsASample)
 
 // ---------------------------------------------------------------- plane and parallax
 
-/** The normalised points of a hard scene as a problem with a 1 px threshold. */
+/** The normalised points of a hard scene as a problem. */
 cv::essential::Problem problemOf(const essential_test::HardScene& s)
 {
-    const double f = 0.5 * (s.K(0, 0) + s.K(1, 1));
-    return cv::essential::makeProblem(s.x1, s.x2, 1.0 / f);
+    return cv::essential::makeProblem(s.x1, s.x2);
+}
+
+/** A 1 px threshold on the Sampson distance for a hard scene's camera. */
+cv::essential::InlierTest onePixel(const essential_test::HardScene& s)
+{
+    return cv::essential::InlierTest{2.0 / (s.K(0, 0) + s.K(1, 1))};
 }
 
 /** R, t of E by cheirality on the true inliers. */
@@ -136,16 +141,17 @@ TEST(PlaneParallax, RecoversThePoseFromThePlanesTwin)
         std::vector<cv::Mat> Rs, ts, ns;
         cv::decomposeHomographyMat(cv::Mat(Hn), cv::Mat::eye(3, 3, CV_64F), Rs, ts, ns);
         const cv::essential::Problem problem = problemOf(s);
+        const cv::essential::InlierTest test = onePixel(s);
         for (size_t k = 0; k < Rs.size(); ++k) {
             const cv::Matx33d Rk(Rs[k]);
             if (rotationErrorDeg(Rk, s.R) < 2.0) continue; // the true pose itself
             const cv::Vec3d tk(ts[k]);
             const cv::Matx33d twin = essential_test::skewMatrix(tk) * Rk;
             const cv::essential::scoring::Score before =
-                cv::essential::scoring::scoreMsac(twin, problem, problem.inlierTest());
+                cv::essential::scoring::scoreMsac(twin, problem, test);
             cv::RNG rng(seed);
             const cv::essential::degeneracy::PlaneParallaxResult r =
-                cv::essential::degeneracy::checkPlaneAndParallax(problem, twin, before, rng);
+                cv::essential::degeneracy::checkPlaneAndParallax(problem, test, twin, before, rng);
             SCOPED_TRACE(testing::Message() << "seed " << seed << " solution " << k);
             EXPECT_TRUE(r.planeFound);
             ASSERT_TRUE(r.improved);
@@ -172,12 +178,13 @@ TEST(PlaneParallax, LeavesModelsWithoutADominantPlaneAlone)
     cfg.inlierRatio = 0.5;
     for (uint64_t seed = 1; seed <= 5; ++seed) {
         const essential_test::SyntheticScene s = essential_test::makeScene(cfg, seed);
-        const cv::essential::Problem problem = cv::essential::makeProblem(s.x1, s.x2, 1.0 / 500);
+        const cv::essential::Problem problem = cv::essential::makeProblem(s.x1, s.x2);
+        const cv::essential::InlierTest test{1.0 / 500};
         const cv::essential::scoring::Score score =
-            cv::essential::scoring::scoreMsac(s.E, problem, problem.inlierTest());
+            cv::essential::scoring::scoreMsac(s.E, problem, test);
         cv::RNG rng(seed);
         const cv::essential::degeneracy::PlaneParallaxResult r =
-            cv::essential::degeneracy::checkPlaneAndParallax(problem, s.E, score, rng);
+            cv::essential::degeneracy::checkPlaneAndParallax(problem, test, s.E, score, rng);
         EXPECT_FALSE(r.planeFound) << "seed " << seed;
         EXPECT_FALSE(r.improved) << "seed " << seed;
         EXPECT_EQ(r.samples, 0) << "seed " << seed;

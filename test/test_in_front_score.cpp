@@ -71,20 +71,20 @@ int addPointsBehind(SyntheticScene& s, int count, uint64_t seed)
 }
 
 constexpr double kThreshold = 0.002; // normalised: 4 noise sigmas
+const cv::essential::InlierTest kTest{kThreshold};
 
 TEST(InFrontScore, EqualsThePlainScoreWhenEveryInlierIsInFront)
 {
     for (uint64_t seed = 1; seed <= 10; ++seed) {
         const SyntheticScene s = makeScene(nearConfig(1.0), seed);
-        const Problem problem = cv::essential::makeProblem(s.x1, s.x2, kThreshold);
-        const Score plain = scoreMsac(s.E, problem, problem.inlierTest());
-        const Score front = scoreMsacInFront(s.E, problem, problem.inlierTest());
+        const Problem problem = cv::essential::makeProblem(s.x1, s.x2);
+        const Score plain = scoreMsac(s.E, problem, kTest);
+        const Score front = scoreMsacInFront(s.E, problem, kTest);
         EXPECT_GT(plain.inliers, 290) << "seed " << seed; // 4 sigmas: all but a few
         EXPECT_EQ(front.inliers, plain.inliers) << "seed " << seed;
         // Same terms summed in another order.
         EXPECT_NEAR(front.cost, plain.cost, 1e-12 * plain.cost) << "seed " << seed;
-        EXPECT_EQ(inliersInFront(s.E, problem, problem.inlierTest()), plain.inliers)
-            << "seed " << seed;
+        EXPECT_EQ(inliersInFront(s.E, problem, kTest), plain.inliers) << "seed " << seed;
     }
 }
 
@@ -95,14 +95,14 @@ TEST(InFrontScore, InliersBehindTheCamerasCostAsOutliers)
         SyntheticScene s = makeScene(nearConfig(1.0), seed);
         const int behind = addPointsBehind(s, 40, seed + 100);
         ASSERT_EQ(behind, 40) << "seed " << seed;
-        const Problem problem = cv::essential::makeProblem(s.x1, s.x2, kThreshold);
-        const Score plain = scoreMsac(s.E, problem, problem.inlierTest());
-        const Score front = scoreMsacInFront(s.E, problem, problem.inlierTest());
+        const Problem problem = cv::essential::makeProblem(s.x1, s.x2);
+        const Score plain = scoreMsac(s.E, problem, kTest);
+        const Score front = scoreMsacInFront(s.E, problem, kTest);
         // The exact points behind are inliers of the plain score at zero distance; the in-front
         // score charges each threshold^2.
         EXPECT_EQ(front.inliers, plain.inliers - behind) << "seed " << seed;
         EXPECT_NEAR(front.cost, plain.cost + behind * t2, 1e-9 * t2) << "seed " << seed;
-        EXPECT_EQ(inliersInFront(s.E, problem, problem.inlierTest()), plain.inliers - behind);
+        EXPECT_EQ(inliersInFront(s.E, problem, kTest), plain.inliers - behind);
     }
 }
 
@@ -112,22 +112,22 @@ TEST(InFrontScore, NeverBelowThePlainScoreAndKeepsTheEarlyExit)
     for (uint64_t seed = 1; seed <= 20; ++seed) {
         SyntheticScene s = makeScene(nearConfig(0.5), seed);
         addPointsBehind(s, 20, seed + 200);
-        const Problem problem = cv::essential::makeProblem(s.x1, s.x2, kThreshold);
+        const Problem problem = cv::essential::makeProblem(s.x1, s.x2);
         // Wrong models near the true one, where both scores have many inliers.
         const cv::Matx33d dR = essential_test::axisAngle(essential_test::randomUnit(g), 0.01);
         const cv::Matx33d E = essential_test::skewMatrix(s.t) * dR * s.R;
-        const Score plain = scoreMsac(E, problem, problem.inlierTest());
-        const Score front = scoreMsacInFront(E, problem, problem.inlierTest());
+        const Score plain = scoreMsac(E, problem, kTest);
+        const Score front = scoreMsacInFront(E, problem, kTest);
         EXPECT_GE(front.cost, plain.cost * (1 - 1e-12)) << "seed " << seed;
         EXPECT_LE(front.inliers, plain.inliers) << "seed " << seed;
         // A bound the plain cost reaches: returned without decomposition, at or above the bound.
-        const Score exited = scoreMsacInFront(E, problem, problem.inlierTest(), 0.5 * plain.cost);
+        const Score exited = scoreMsacInFront(E, problem, kTest, 0.5 * plain.cost);
         EXPECT_GE(exited.cost, 0.5 * plain.cost) << "seed " << seed;
     }
     // A matrix with no decomposition costs N threshold^2.
     const SyntheticScene s = makeScene(nearConfig(0.5), 1);
-    const Problem problem = cv::essential::makeProblem(s.x1, s.x2, kThreshold);
-    const Score zero = scoreMsacInFront(cv::Matx33d::zeros(), problem, problem.inlierTest());
+    const Problem problem = cv::essential::makeProblem(s.x1, s.x2);
+    const Score zero = scoreMsacInFront(cv::Matx33d::zeros(), problem, kTest);
     EXPECT_EQ(zero.inliers, 0);
     EXPECT_DOUBLE_EQ(zero.cost, problem.size() * kThreshold * kThreshold);
 }

@@ -37,7 +37,7 @@ TEST(IrlsRefinement, ConvergesToTheTrueEFromPerturbedStartsOnExactData)
     cfg.noiseSigma = 0.0;
     for (uint64_t seed = 1; seed <= 20; ++seed) {
         const SyntheticScene s = makeScene(cfg, seed);
-        const cv::essential::Problem problem = problemOf(s, 1.0 / cfg.focal);
+        const cv::essential::Problem problem = problemOf(s);
         const double rot = 1.0 + 4.0 * double(seed % 5) / 4.0; // 1 to 5 degrees
         const cv::Matx33d start = perturbed(s, rot, 2.0 * rot, seed);
         ASSERT_GT(essentialDistance(start, s.E), 1e-2);
@@ -64,11 +64,9 @@ TEST(IrlsRefinement, CauchyWeightsTakeOutMostOfTheOutliersPull)
     for (uint64_t seed = 1; seed <= 10; ++seed) {
         const SyntheticScene s = makeScene(cfg, seed);
         const double threshold = 1.0 / cfg.focal;
-        const auto all = cv::essential::refine::refineIrls(problemOf(s, threshold), s.E, threshold);
-        const auto clean =
-            cv::essential::refine::refineIrls(problemOf(s, threshold, true), s.E, threshold);
-        const auto leastSquares =
-            cv::essential::refine::refineIrls(problemOf(s, threshold), s.E, 1e3);
+        const auto all = cv::essential::refine::refineIrls(problemOf(s), s.E, threshold);
+        const auto clean = cv::essential::refine::refineIrls(problemOf(s), s.E, threshold);
+        const auto leastSquares = cv::essential::refine::refineIrls(problemOf(s), s.E, 1e3);
         const double robustGap = essentialDistance(all.E, clean.E);
         const double leastSquaresGap = essentialDistance(leastSquares.E, clean.E);
         EXPECT_LT(robustGap, 0.03) << "seed " << seed;
@@ -111,8 +109,8 @@ TEST(IrlsRefinement, TukeyLossIgnoresThePointsBeyondItsScale)
             }
         }
         ASSERT_LT(a.size(), s.x1.size());
-        const cv::essential::Problem all = problemOf(s, threshold);
-        const cv::essential::Problem near = cv::essential::makeProblem(a, b, threshold);
+        const cv::essential::Problem all = problemOf(s);
+        const cv::essential::Problem near = cv::essential::makeProblem(a, b);
         const cv::Matx33d start = perturbed(s, 0.05, 0.1, seed);
         const auto tAll = cv::essential::refine::refineIrls(all, start, c, tukey);
         const auto tNear = cv::essential::refine::refineIrls(near, start, c, tukey);
@@ -135,7 +133,7 @@ TEST(IrlsRefinement, StartingAtItsOwnResultMovesLittle)
     cfg.inlierRatio = 0.6;
     for (uint64_t seed = 1; seed <= 10; ++seed) {
         const SyntheticScene s = makeScene(cfg, seed);
-        const cv::essential::Problem problem = problemOf(s, 1.0 / cfg.focal);
+        const cv::essential::Problem problem = problemOf(s);
         const auto first = cv::essential::refine::refineIrls(problem, s.E, 1.0 / cfg.focal);
         const auto second = cv::essential::refine::refineIrls(problem, first.E, 1.0 / cfg.focal);
         EXPECT_LT(essentialDistance(first.E, second.E), 5e-4) << "seed " << seed;
@@ -147,7 +145,7 @@ TEST(IrlsRefinement, AnInvalidStartIsReturnedUnchanged)
     SceneConfig cfg;
     cfg.numPoints = 50;
     const SyntheticScene s = makeScene(cfg, 5);
-    const cv::essential::Problem problem = problemOf(s, 1.0 / cfg.focal);
+    const cv::essential::Problem problem = problemOf(s);
     const auto zero = cv::essential::refine::refineIrls(problem, cv::Matx33d::zeros(), 0.002);
     EXPECT_FALSE(zero.improved);
     EXPECT_EQ(cv::norm(zero.E), 0.0);

@@ -131,11 +131,12 @@ TEST(LmedsThreshold, FormulaAtEveryNumberOfPoints)
         SCOPED_TRACE(n);
         cfg.numPoints = n;
         const SyntheticScene s = makeScene(cfg, 33);
-        const cv::essential::Problem problem = cv::essential::makeProblem(s.x1, s.x2, 1e-3);
+        const cv::essential::Problem problem = cv::essential::makeProblem(s.x1, s.x2);
         const cv::Ptr<cv::essential::EssentialSolver> solver =
             cv::essential::createSolver("robust");
         cv::RNG rng(1);
         cv::essential::search::SearchSettings settings;
+        settings.test.threshold = 1e-3;
         settings.maxIters = 50;
         const cv::essential::search::SearchResult r =
             cv::essential::search::searchLmeds(problem, *solver, rng, settings);

@@ -64,8 +64,7 @@ TEST(PreemptiveSchedule, TheSearchScoresWhatTheScheduleSays)
     cfg.numPoints = 350;
     cfg.inlierRatio = 0.8;
     const auto scene = essential_test::makeScene(cfg, 17);
-    const cv::essential::Problem problem =
-        cv::essential::makeProblem(scene.x1, scene.x2, 1.0 / cfg.focal);
+    const cv::essential::Problem problem = cv::essential::makeProblem(scene.x1, scene.x2);
     for (int M : {1, 5, 64, 300})
         for (int B : {1, 20, 100, 1000}) {
             SCOPED_TRACE("M " + std::to_string(M) + " B " + std::to_string(B));
@@ -73,6 +72,7 @@ TEST(PreemptiveSchedule, TheSearchScoresWhatTheScheduleSays)
             cv::Ptr<cv::essential::EssentialSolver> solver = cv::essential::createSolver("gn");
             cv::RNG rng(3);
             cv::essential::search::SearchSettings settings;
+            settings.test.threshold = 1.0 / cfg.focal;
             settings.preemptiveHypotheses = M;
             settings.preemptiveBlockSize = B;
             const auto result =

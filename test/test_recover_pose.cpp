@@ -478,23 +478,22 @@ TEST(RecoverPose, NormalisedInterfaceMaskOutputs)
 {
     const SyntheticScene s = makeScene(inlierScene(0.0), 60);
     const int N = static_cast<int>(s.x1.size());
+    const cv::essential::Problem points = cv::essential::makeProblem(s.x1, s.x2);
     std::vector<uchar> in(static_cast<size_t>(N), 1), out(static_cast<size_t>(N), 7);
     in[3] = 0;
     cv::essential::pose::PoseResult r;
-    ASSERT_TRUE(cv::essential::pose::recoverPoseNormalised(s.E, s.x1.data(), s.x2.data(), N,
-                                                           in.data(), out.data(), r));
+    ASSERT_TRUE(cv::essential::pose::recoverPoseNormalised(s.E, points, in.data(), out.data(), r));
     EXPECT_EQ(r.inFront, N - 1);
     EXPECT_EQ(out[3], 0);
     EXPECT_EQ(std::count(out.begin(), out.end(), uchar(1)), N - 1);
     // In place (maskOut aliasing maskIn).
-    ASSERT_TRUE(cv::essential::pose::recoverPoseNormalised(s.E, s.x1.data(), s.x2.data(), N,
-                                                           in.data(), in.data(), r));
+    ASSERT_TRUE(cv::essential::pose::recoverPoseNormalised(s.E, points, in.data(), in.data(), r));
     EXPECT_EQ(std::count(in.begin(), in.end(), uchar(1)), N - 1);
     EXPECT_LT(rotationErrorDeg(r.R, s.R), 1e-4);
     EXPECT_LT(translationErrorDeg(r.t, s.t), 1e-4);
     // Zero E: false, mask cleared.
-    EXPECT_FALSE(cv::essential::pose::recoverPoseNormalised(
-        cv::Matx33d::zeros(), s.x1.data(), s.x2.data(), N, nullptr, out.data(), r));
+    EXPECT_FALSE(cv::essential::pose::recoverPoseNormalised(cv::Matx33d::zeros(), points, nullptr,
+                                                            out.data(), r));
     EXPECT_EQ(std::count(out.begin(), out.end(), uchar(0)), N);
 }
 

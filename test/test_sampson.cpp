@@ -114,7 +114,7 @@ TEST(Sampson, ScoringAndTheJacobianUseTheSameDistance)
         p1[i] = cv::Point2d(u(g), u(g));
         p2[i] = cv::Point2d(u(g), u(g));
     }
-    const cv::essential::Problem problem = cv::essential::makeProblem(p1, p2, 0.01);
+    const cv::essential::Problem problem = cv::essential::makeProblem(p1, p2);
     EssentialPose pose;
     pose.R = expSO3(Eigen::Vector3d(n(g), n(g), n(g)));
     pose.Rt = expSO3(Eigen::Vector3d(n(g), n(g), n(g)));
@@ -169,13 +169,12 @@ TEST(SymmetricEpipolar, ScoringUsesTheProblemsDistance)
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j)
             Ecv(i, j) = E(i, j);
-    const auto symmetric =
-        cv::essential::makeProblem(p1, p2, 0.05, cv::essential::DISTANCE_SYMMETRIC_EPIPOLAR);
+    const auto symmetric = cv::essential::makeProblem(p1, p2);
+    const cv::essential::InlierTest test{0.05, cv::essential::DISTANCE_SYMMETRIC_EPIPOLAR};
     std::vector<double> d(p1.size());
-    cv::essential::scoring::squaredDistances(Ecv, symmetric, symmetric.inlierTest(), d.data());
+    cv::essential::scoring::squaredDistances(Ecv, symmetric, test, d.data());
     std::vector<uchar> mask(p1.size());
-    const int inliers =
-        cv::essential::scoring::inlierMask(Ecv, symmetric, symmetric.inlierTest(), mask.data());
+    const int inliers = cv::essential::scoring::inlierMask(Ecv, symmetric, test, mask.data());
     int expected = 0;
     for (size_t i = 0; i < p1.size(); ++i) {
         const double ref =

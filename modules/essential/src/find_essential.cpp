@@ -25,7 +25,7 @@ namespace essential {
 
 namespace {
 
-/** The distance the problem's threshold applies to: LMedS ranks by the Sampson distance whatever
+/** The distance the call's threshold applies to: LMedS ranks by the Sampson distance whatever
 was asked (as OpenCV's LMEDS), everything else uses EssentialParams::distance. */
 EssentialDistance inlierDistance(const EssentialParams& params)
 {
@@ -43,10 +43,8 @@ Mat estimateWithCamera(InputArray points1, InputArray points2, const Matx33d& K,
     std::vector<Point2d> n1 = normalisePoints(p1, K), n2 = normalisePoints(p2, K);
     checkNormalisedPoints(n1, "points1");
     checkNormalisedPoints(n2, "points2");
-    Problem problem =
-        makeProblem(std::move(n1), std::move(n2), normalisedThreshold(params.threshold, meanFocal),
-                    inlierDistance(params));
-    return estimate(problem, params, mask, maskWriting, report, start);
+    const InlierTest test{normalisedThreshold(params.threshold, meanFocal), inlierDistance(params)};
+    return estimate(makeProblem(n1, n2), test, params, mask, maskWriting, report, start);
 }
 
 } // namespace
@@ -74,10 +72,8 @@ Mat estimateTwoCameras(InputArray points1, InputArray points2, InputArray camera
     if (normalised1) *normalised1 = n1;
     if (normalised2) *normalised2 = n2;
     const double meanFocal = 0.25 * (K1(0, 0) + K1(1, 1) + K2(0, 0) + K2(1, 1));
-    Problem problem =
-        makeProblem(std::move(n1), std::move(n2), normalisedThreshold(params.threshold, meanFocal),
-                    inlierDistance(params));
-    return estimate(problem, params, mask, maskWriting, nullptr, start);
+    const InlierTest test{normalisedThreshold(params.threshold, meanFocal), inlierDistance(params)};
+    return estimate(makeProblem(n1, n2), test, params, mask, maskWriting, nullptr, start);
 }
 
 Mat findEssentialMatIter(InputArray points1, InputArray points2, InputArray cameraMatrix,

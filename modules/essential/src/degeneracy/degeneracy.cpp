@@ -20,14 +20,14 @@ Eigen::Vector3d bearing(const Point2d& x)
 
 } // namespace
 
-double rotationOnlyFraction(const Point2d* x1, const Point2d* x2, const uchar* mask, int n,
-                            double maxDistance)
+double rotationOnlyFraction(const Problem& points, const uchar* mask, double maxDistance)
 {
+    const int n = points.size();
     Eigen::Matrix3d M = Eigen::Matrix3d::Zero();
     int used = 0;
     for (int i = 0; i < n; ++i) {
         if (!mask[i]) continue;
-        M += bearing(x2[i]) * bearing(x1[i]).transpose();
+        M += bearing(points.point2(i)) * bearing(points.point1(i)).transpose();
         ++used;
     }
     if (used < 3) return 0.0;
@@ -40,25 +40,25 @@ double rotationOnlyFraction(const Point2d* x1, const Point2d* x2, const uchar* m
     int explained = 0;
     for (int i = 0; i < n; ++i) {
         if (!mask[i]) continue;
-        const Eigen::Vector3d q = R * Eigen::Vector3d(x1[i].x, x1[i].y, 1.0);
+        const Eigen::Vector3d q = R * Eigen::Vector3d(points.x1[i], points.y1[i], 1.0);
         if (!(q.z() > 0.0)) continue; // rotated behind the camera: not explained
-        const double dx = q.x() / q.z() - x2[i].x, dy = q.y() / q.z() - x2[i].y;
+        const double dx = q.x() / q.z() - points.x2[i], dy = q.y() / q.z() - points.y2[i];
         explained += dx * dx + dy * dy <= maxDistance * maxDistance;
     }
     return double(explained) / used;
 }
 
-double homographyFraction(const Point2d* x1, const Point2d* x2, const uchar* mask, int n,
-                          double maxDistance)
+double homographyFraction(const Problem& points, const uchar* mask, double maxDistance)
 {
+    const int n = points.size();
     // Hartley's normalisation: centre each view's points and scale them to mean distance sqrt(2),
     // so that the 9 x 9 normal equations are well conditioned.
     Eigen::Vector2d c1(0, 0), c2(0, 0);
     int used = 0;
     for (int i = 0; i < n; ++i) {
         if (!mask[i]) continue;
-        c1 += Eigen::Vector2d(x1[i].x, x1[i].y);
-        c2 += Eigen::Vector2d(x2[i].x, x2[i].y);
+        c1 += Eigen::Vector2d(points.x1[i], points.y1[i]);
+        c2 += Eigen::Vector2d(points.x2[i], points.y2[i]);
         ++used;
     }
     if (used < 5) return 0.0;
@@ -67,16 +67,16 @@ double homographyFraction(const Point2d* x1, const Point2d* x2, const uchar* mas
     double d1 = 0, d2 = 0;
     for (int i = 0; i < n; ++i) {
         if (!mask[i]) continue;
-        d1 += (Eigen::Vector2d(x1[i].x, x1[i].y) - c1).norm();
-        d2 += (Eigen::Vector2d(x2[i].x, x2[i].y) - c2).norm();
+        d1 += (Eigen::Vector2d(points.x1[i], points.y1[i]) - c1).norm();
+        d2 += (Eigen::Vector2d(points.x2[i], points.y2[i]) - c2).norm();
     }
     if (!(d1 > 0) || !(d2 > 0)) return 0.0;
     const double s1 = std::sqrt(2.0) * used / d1, s2 = std::sqrt(2.0) * used / d2;
     Eigen::Matrix<double, 9, 9> AtA = Eigen::Matrix<double, 9, 9>::Zero();
     for (int i = 0; i < n; ++i) {
         if (!mask[i]) continue;
-        const double u = s1 * (x1[i].x - c1.x()), v = s1 * (x1[i].y - c1.y());
-        const double p = s2 * (x2[i].x - c2.x()), q = s2 * (x2[i].y - c2.y());
+        const double u = s1 * (points.x1[i] - c1.x()), v = s1 * (points.y1[i] - c1.y());
+        const double p = s2 * (points.x2[i] - c2.x()), q = s2 * (points.y2[i] - c2.y());
         Eigen::Matrix<double, 9, 1> a, b;
         a << u, v, 1, 0, 0, 0, -p * u, -p * v, -p;
         b << 0, 0, 0, u, v, 1, -q * u, -q * v, -q;
@@ -94,9 +94,9 @@ double homographyFraction(const Point2d* x1, const Point2d* x2, const uchar* mas
     int explained = 0;
     for (int i = 0; i < n; ++i) {
         if (!mask[i]) continue;
-        const Eigen::Vector3d m = H * Eigen::Vector3d(x1[i].x, x1[i].y, 1.0);
+        const Eigen::Vector3d m = H * Eigen::Vector3d(points.x1[i], points.y1[i], 1.0);
         if (!(std::abs(m.z()) > 1e-12)) continue;
-        const double dx = m.x() / m.z() - x2[i].x, dy = m.y() / m.z() - x2[i].y;
+        const double dx = m.x() / m.z() - points.x2[i], dy = m.y() / m.z() - points.y2[i];
         explained += dx * dx + dy * dy <= maxDistance * maxDistance;
     }
     return double(explained) / used;

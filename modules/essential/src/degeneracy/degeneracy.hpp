@@ -9,6 +9,8 @@
 #ifndef OPENCV_ESSENTIAL_DEGENERACY_DEGENERACY_HPP
 #define OPENCV_ESSENTIAL_DEGENERACY_DEGENERACY_HPP
 
+#include "input/problem.hpp"
+
 #include <opencv2/core.hpp>
 
 namespace cv {
@@ -19,14 +21,12 @@ namespace degeneracy {
 Procrustes on the unit bearing vectors of the masked points) and returns the fraction of those
 points whose image-2 position is within `maxDistance` (normalised units) of the projection of
 R x1. 0 when fewer than 3 points are masked in. */
-double rotationOnlyFraction(const Point2d* x1, const Point2d* x2, const uchar* mask, int n,
-                            double maxDistance);
+double rotationOnlyFraction(const Problem& points, const uchar* mask, double maxDistance);
 
 /** Fits a homography x2 ~ H x1 to the masked points (direct linear transform, least squares) and
 returns the fraction of them whose image-2 position is within `maxDistance` (normalised units) of
 H x1. 0 when fewer than 5 points are masked in. */
-double homographyFraction(const Point2d* x1, const Point2d* x2, const uchar* mask, int n,
-                          double maxDistance);
+double homographyFraction(const Problem& points, const uchar* mask, double maxDistance);
 
 } // namespace degeneracy
 } // namespace essential

@@ -30,11 +30,10 @@ constexpr double kDegenerateFraction = 0.9;
 void reportDegeneracy(const Problem& problem, const uchar* inliers, double threshold,
                       EssentialReport& report)
 {
-    const int n = problem.size();
-    report.rotationOnlyFraction = rotationOnlyFraction(
-        problem.p1.data(), problem.p2.data(), inliers, n, kRotationOnlyDistance * threshold);
-    report.homographyFraction = homographyFraction(problem.p1.data(), problem.p2.data(), inliers, n,
-                                                   kRotationOnlyDistance * threshold);
+    report.rotationOnlyFraction =
+        rotationOnlyFraction(problem, inliers, kRotationOnlyDistance * threshold);
+    report.homographyFraction =
+        homographyFraction(problem, inliers, kRotationOnlyDistance * threshold);
     report.degenerate = report.rotationOnlyFraction >= kDegenerateFraction ||
                         report.homographyFraction >= kDegenerateFraction;
 }

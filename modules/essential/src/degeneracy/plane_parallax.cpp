@@ -146,13 +146,12 @@ bool planeLikely(const std::vector<Point2d>& a, const std::vector<Point2d>& b, d
 
 } // namespace
 
-PlaneParallaxResult checkPlaneAndParallax(const Problem& problem, const Matx33d& E,
+PlaneParallaxResult checkPlaneAndParallax(const Problem& problem, InlierTest test, const Matx33d& E,
                                           const scoring::Score& score, RNG& rng)
 {
     PlaneParallaxResult result;
     const int n = problem.size();
     std::vector<uchar> mask(static_cast<size_t>(n));
-    const InlierTest test = problem.inlierTest();
     const int inliers = scoring::inlierMask(E, problem, test, mask.data());
     if (inliers < 8) return result; // a homography needs 4, and a plane share of it 8 to mean much
     if (inliers >= kMaxCheckedInlierRatio * n) return result;
@@ -162,8 +161,8 @@ PlaneParallaxResult checkPlaneAndParallax(const Problem& problem, const Matx33d&
     b.reserve(static_cast<size_t>(inliers));
     for (int i = 0; i < n; ++i)
         if (mask[i]) {
-            a.push_back(problem.p1[i]);
-            b.push_back(problem.p2[i]);
+            a.push_back(problem.point1(i));
+            b.push_back(problem.point2(i));
         }
     const double band = kPlaneBand * test.threshold;
     if (!planeLikely(a, b, band, rng)) return result;
@@ -182,7 +181,7 @@ PlaneParallaxResult checkPlaneAndParallax(const Problem& problem, const Matx33d&
     offPlane.reserve(static_cast<size_t>(n));
     int onPlaneInliers = 0;
     for (int i = 0; i < n; ++i) {
-        if (transfersWithin(H, problem.p1[i], problem.p2[i], memberBand)) {
+        if (transfersWithin(H, problem.point1(i), problem.point2(i), memberBand)) {
             ++result.planeInliers;
             onPlaneInliers += mask[i];
         } else {
@@ -195,7 +194,7 @@ PlaneParallaxResult checkPlaneAndParallax(const Problem& problem, const Matx33d&
     if (m < 2) return result;
 
     // The points off the plane as a problem of their own, to count a model's inliers among them.
-    const Problem off = subsetProblem(problem, offPlane.data(), m, test);
+    const Problem off = subsetProblem(problem, offPlane.data(), m);
     std::vector<uchar> offMask(static_cast<size_t>(m));
     auto offInliers = [&](const Matx33d& model) {
         return scoring::inlierMask(model, off, test, offMask.data());
@@ -208,7 +207,7 @@ PlaneParallaxResult checkPlaneAndParallax(const Problem& problem, const Matx33d&
     std::vector<Vec3d> lines(static_cast<size_t>(m));
     for (int k = 0; k < m; ++k) {
         const int i = offPlane[static_cast<size_t>(k)];
-        Vec3d l = (H * homogeneous(problem.p1[i])).cross(homogeneous(problem.p2[i]));
+        Vec3d l = (H * homogeneous(problem.point1(i))).cross(homogeneous(problem.point2(i)));
         const double len = std::sqrt(l[0] * l[0] + l[1] * l[1]);
         lines[static_cast<size_t>(k)] = len > 1e-15 ? l / len : Vec3d(0, 0, 0);
     }
@@ -233,7 +232,7 @@ PlaneParallaxResult checkPlaneAndParallax(const Problem& problem, const Matx33d&
     std::vector<uchar> near(static_cast<size_t>(n));
     auto polishAndCompare = [&](const Matx33d& candidate) {
         if (scoring::inlierMask(candidate, problem, loose, near.data()) < 5) return;
-        const Problem subset = maskedProblem(problem, near.data(), test);
+        const Problem subset = maskedProblem(problem, near.data());
         refine::IrlsSettings irls;
         irls.maxIterations = kPolishIterations;
         const refine::IrlsResult polished =

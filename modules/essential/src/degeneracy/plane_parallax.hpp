@@ -45,7 +45,7 @@ explains at least kPlaneShare of them, draws kMaxParallaxSamples pairs of points
 not explain, builds E = [e']x H from each (projected onto the essential manifold), polishes the
 best few by IRLS and keeps the best polished model if its MSAC cost is lower than `score`'s and its
 gain of inliers off the plane is well beyond chance. */
-PlaneParallaxResult checkPlaneAndParallax(const Problem& problem, const Matx33d& E,
+PlaneParallaxResult checkPlaneAndParallax(const Problem& problem, InlierTest test, const Matx33d& E,
                                           const scoring::Score& score, RNG& rng);
 
 } // namespace degeneracy

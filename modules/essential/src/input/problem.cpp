@@ -97,9 +97,9 @@ double normalisedThreshold(double threshold, double meanFocal)
     return t;
 }
 
-Problem makeProblem(std::vector<Point2d> n1, std::vector<Point2d> n2, double threshold,
-                    EssentialDistance distance)
+Problem makeProblem(const std::vector<Point2d>& n1, const std::vector<Point2d>& n2)
 {
+    CV_Assert(n1.size() == n2.size());
     Problem p;
     const size_t n = n1.size();
     p.x1.resize(n);
@@ -112,32 +112,45 @@ Problem makeProblem(std::vector<Point2d> n1, std::vector<Point2d> n2, double thr
         p.x2[i] = n2[i].x;
         p.y2[i] = n2[i].y;
     }
-    p.p1 = std::move(n1);
-    p.p2 = std::move(n2);
-    p.threshold = threshold;
-    p.distance = distance;
     return p;
 }
 
-Problem subsetProblem(const Problem& problem, const int* indices, int count, InlierTest test)
+Problem subsetProblem(const Problem& problem, const int* indices, int count)
 {
-    std::vector<Point2d> a(static_cast<size_t>(count)), b(static_cast<size_t>(count));
-    for (int i = 0; i < count; ++i) {
-        a[static_cast<size_t>(i)] = problem.p1[static_cast<size_t>(indices[i])];
-        b[static_cast<size_t>(i)] = problem.p2[static_cast<size_t>(indices[i])];
+    Problem p;
+    const size_t n = static_cast<size_t>(count);
+    p.x1.resize(n);
+    p.y1.resize(n);
+    p.x2.resize(n);
+    p.y2.resize(n);
+    for (size_t i = 0; i < n; ++i) {
+        const size_t k = static_cast<size_t>(indices[i]);
+        p.x1[i] = problem.x1[k];
+        p.y1[i] = problem.y1[k];
+        p.x2[i] = problem.x2[k];
+        p.y2[i] = problem.y2[k];
     }
-    return makeProblem(std::move(a), std::move(b), test.threshold, test.distance);
+    return p;
 }
 
-Problem maskedProblem(const Problem& problem, const uchar* mask, InlierTest test)
+Problem maskedProblem(const Problem& problem, const uchar* mask)
 {
-    std::vector<Point2d> a, b;
+    std::vector<int> indices;
+    indices.reserve(static_cast<size_t>(problem.size()));
     for (int i = 0; i < problem.size(); ++i)
-        if (mask[i]) {
-            a.push_back(problem.p1[static_cast<size_t>(i)]);
-            b.push_back(problem.p2[static_cast<size_t>(i)]);
-        }
-    return makeProblem(std::move(a), std::move(b), test.threshold, test.distance);
+        if (mask[i]) indices.push_back(i);
+    return subsetProblem(problem, indices.data(), static_cast<int>(indices.size()));
+}
+
+void toPoint2d(const Problem& problem, std::vector<Point2d>& p1, std::vector<Point2d>& p2)
+{
+    const int n = problem.size();
+    p1.resize(static_cast<size_t>(n));
+    p2.resize(static_cast<size_t>(n));
+    for (int i = 0; i < n; ++i) {
+        p1[static_cast<size_t>(i)] = problem.point1(i);
+        p2[static_cast<size_t>(i)] = problem.point2(i);
+    }
 }
 
 void checkConfidence(double prob)

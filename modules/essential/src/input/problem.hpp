@@ -28,20 +28,23 @@ struct InlierTest
     InlierTest withThreshold(double t) const { return InlierTest{t, distance}; }
 };
 
-/** Normalised correspondences in structure-of-arrays layout, so that scoring loops vectorise, plus
-the same points as Point2d arrays for the solvers' samples. */
+/** The normalised correspondences of one call, stored once, in structure-of-arrays layout so that
+scoring loops vectorise; point1() / point2() read one correspondence (a solver's sample is gathered
+with them). What makes a point an inlier is not part of it: the stages that test points take an
+InlierTest beside it. */
 struct Problem
 {
     std::vector<double> x1, y1, x2, y2;
-    std::vector<Point2d> p1, p2;
-    /** The call's inlier threshold on `distance`, in normalised units (inlierTest()). */
-    double threshold = 0.0;
-    /** The distance the call's inlier test compares with the threshold. */
-    EssentialDistance distance = DISTANCE_SAMPSON;
 
     int size() const { return static_cast<int>(x1.size()); }
-    /** The call's inlier test, as the caller set it. */
-    InlierTest inlierTest() const { return InlierTest{threshold, distance}; }
+    Point2d point1(int i) const
+    {
+        return Point2d(x1[static_cast<size_t>(i)], y1[static_cast<size_t>(i)]);
+    }
+    Point2d point2(int i) const
+    {
+        return Point2d(x2[static_cast<size_t>(i)], y2[static_cast<size_t>(i)]);
+    }
 };
 
 /** Checks that the two point sets have the same size and at least `minPoints` points. */
@@ -71,17 +74,18 @@ void checkNormalisedPoints(const std::vector<Point2d>& normalised, const char* n
 threshold with a tiny focal length, or the converse). */
 double normalisedThreshold(double threshold, double meanFocal);
 
-/** Builds the Problem from normalised points and a threshold already in normalised units, on the
-given inlier distance. */
-Problem makeProblem(std::vector<Point2d> n1, std::vector<Point2d> n2, double threshold,
-                    EssentialDistance distance = DISTANCE_SAMPSON);
+/** The Problem of normalised points n1[i] <-> n2[i]. */
+Problem makeProblem(const std::vector<Point2d>& n1, const std::vector<Point2d>& n2);
 
-/** The points `indices[0..count)` of `problem`, in that order, as a problem with the given inlier
-test: what a refinement on the points near a model fits. */
-Problem subsetProblem(const Problem& problem, const int* indices, int count, InlierTest test);
+/** The points `indices[0..count)` of `problem`, in that order: what a refinement on the points
+near a model fits. */
+Problem subsetProblem(const Problem& problem, const int* indices, int count);
 
-/** The same for the points whose `mask` entry is non-zero, in their order. */
-Problem maskedProblem(const Problem& problem, const uchar* mask, InlierTest test);
+/** The points whose `mask` entry is non-zero, in their order. */
+Problem maskedProblem(const Problem& problem, const uchar* mask);
+
+/** The points as Point2d arrays, for OpenCV's RANSAC loop (which takes a Mat of them). */
+void toPoint2d(const Problem& problem, std::vector<Point2d>& p1, std::vector<Point2d>& p2);
 
 /** Argument checks shared by every overload; messages name the argument. */
 void checkConfidence(double prob);

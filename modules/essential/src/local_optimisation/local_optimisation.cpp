@@ -82,7 +82,7 @@ void LocalOptimisation::polishRunnersUp(const CandidatePool& pool, RNG& rng, Bes
 void LocalOptimisation::innerSampling(BestModel& best, LocalOptimisationCounters& counters)
 {
     const int n = problem_.size();
-    const InlierTest test = problem_.inlierTest();
+    const InlierTest test = score_.test;
     scoring::inlierMask(best.E, problem_,
                         test.withThreshold(kInnerThresholdFactor * test.threshold), mask_.data());
     chosen_.clear();
@@ -97,8 +97,8 @@ void LocalOptimisation::innerSampling(BestModel& best, LocalOptimisationCounters
     for (int k = 0; k < innerSamples; ++k) {
         sampling::drawUniformSample(innerRng_, pool, inner_.sampleSize, inner_.indices.data());
         for (int i = 0; i < inner_.sampleSize; ++i) {
-            inner_.x1[i] = problem_.p1[chosen_[inner_.indices[i]]];
-            inner_.x2[i] = problem_.p2[chosen_[inner_.indices[i]]];
+            inner_.x1[i] = problem_.point1(chosen_[inner_.indices[i]]);
+            inner_.x2[i] = problem_.point2(chosen_[inner_.indices[i]]);
         }
         if (inner_.hasCoincidentPoints()) continue;
         const int count = inner_.keepSolved(
@@ -120,7 +120,7 @@ void LocalOptimisation::polish(const Matx33d& start, RNG& rng, BestModel& best,
                                LocalOptimisationCounters& counters)
 {
     const int n = problem_.size();
-    const InlierTest test = problem_.inlierTest();
+    const InlierTest test = score_.test;
     scoring::inlierMask(start, problem_, test.withThreshold(settings_.band * test.threshold),
                         mask_.data());
     chosen_.clear();
@@ -133,7 +133,7 @@ void LocalOptimisation::polish(const Matx33d& start, RNG& rng, BestModel& best,
         k = settings_.sampleSize;
     }
     if (k < 5) return; // IRLS fits 5 degrees of freedom
-    const Problem subset = subsetProblem(problem_, chosen_.data(), k, problem_.inlierTest());
+    const Problem subset = subsetProblem(problem_, chosen_.data(), k);
     refine::IrlsSettings irls;
     irls.maxIterations = settings_.iterations;
     ++counters.polishes;

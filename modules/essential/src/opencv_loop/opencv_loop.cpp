@@ -76,14 +76,16 @@ Matx33d readModel(InputArray model)
     return Matx33d(E64.ptr<double>());
 }
 
-/** The solver as OpenCV's kernel. The data handed to the loop are the problem's Point2d arrays
-(N x 1 CV_64FC2), so a sample arrives as modelPoints x 1 CV_64FC2 and the errors can be computed
-on the problem's structure-of-arrays copy. Counts the calls, which OpenCV's loop does not report. */
+/** The solver as OpenCV's kernel. The data handed to the loop are the problem's points as Point2d
+arrays (N x 1 CV_64FC2, `handed` the first view's), so a sample arrives as modelPoints x 1
+CV_64FC2 and the errors of all points can be computed on the problem itself. Counts the calls, which
+OpenCV's loop does not report. */
 class SolverCallback : public PointSetRegistrator::Callback
 {
 public:
-    SolverCallback(const Problem& problem, EssentialSolver& solver, RNG& rng)
-        : problem_(problem), solver_(solver), rng_(rng),
+    SolverCallback(const Problem& problem, InlierTest test, const Point2d* handed,
+                   EssentialSolver& solver, RNG& rng)
+        : problem_(problem), test_(test), handed_(handed), solver_(solver), rng_(rng),
           solutions_(static_cast<size_t>(std::max(1, solver.maxSolutions()))),
           errors_(static_cast<size_t>(problem.size()))
     {
@@ -126,15 +128,15 @@ public:
         const Matx33d E = readModel(model);
         const Mat a = m1.getMat();
         const int n = a.checkVector(2);
-        if (a.data == reinterpret_cast<const uchar*>(problem_.p1.data()) && n == problem_.size()) {
-            scoring::squaredDistances(E, problem_, problem_.inlierTest(), errors_.data());
+        if (a.data == reinterpret_cast<const uchar*>(handed_) && n == problem_.size()) {
+            scoring::squaredDistances(E, problem_, test_, errors_.data());
         } else {
             // Data other than the problem's arrays (not done by OpenCV 4.6's loops): read them.
             readSample(m1, x1_);
             readSample(m2, x2_);
-            Problem other = makeProblem(x1_, x2_, problem_.threshold, problem_.distance);
+            const Problem other = makeProblem(x1_, x2_);
             errors_.resize(static_cast<size_t>(other.size()));
-            scoring::squaredDistances(E, other, other.inlierTest(), errors_.data());
+            scoring::squaredDistances(E, other, test_, errors_.data());
         }
         const int count = static_cast<int>(errors_.size());
         err.create(count, 1, CV_32F);
@@ -166,6 +168,8 @@ public:
 
 private:
     const Problem& problem_;
+    const InlierTest test_;
+    const Point2d* handed_;
     EssentialSolver& solver_;
     RNG& rng_;
     mutable std::vector<Matx33d> solutions_;
@@ -179,25 +183,29 @@ SearchResult searchOpenCvLoop(const Problem& problem, EssentialSolver& solver, R
                               const SearchSettings& settings, int method)
 {
     SearchResult result;
-    result.threshold = problem.threshold;
+    result.threshold = settings.test.threshold;
     const int n = problem.size();
     const int modelPoints = solver.sampleSize();
     if (n < modelPoints || modelPoints <= 0) return result;
 
     // Once per estimate (EssentialSolver); LMedS has no inlier threshold of its own.
-    if (method != LMEDS) solver.setThreshold(problem.threshold);
-    Ptr<SolverCallback> callback(new SolverCallback(problem, solver, rng)); // makePtr: const refs
+    if (method != LMEDS) solver.setThreshold(settings.test.threshold);
+    std::vector<Point2d> p1, p2; // what OpenCV's loop reads the points from
+    toPoint2d(problem, p1, p2);
+    // makePtr would copy the const references
+    Ptr<SolverCallback> callback(
+        new SolverCallback(problem, settings.test, p1.data(), solver, rng));
     const bool lmeds = method == LMEDS;
     // maxIters is passed as given: OpenCV's loop applies its own confidence formula (see above).
     Ptr<PointSetRegistrator> loop =
         lmeds ? createLMeDSPointSetRegistrator(callback, modelPoints, settings.confidence,
                                                settings.maxIters)
-              : createRANSACPointSetRegistrator(callback, modelPoints, problem.threshold,
+              : createRANSACPointSetRegistrator(callback, modelPoints, settings.test.threshold,
                                                 settings.confidence, settings.maxIters);
     CV_Assert(!loop.empty());
 
     Mat model, mask;
-    const bool ok = loop->run(problem.p1, problem.p2, model, mask);
+    const bool ok = loop->run(p1, p2, model, mask);
 
     // OpenCV's loops report neither counts nor scores. Both call runKernel exactly once per
     // iteration (a sample that fails checkSubset is redrawn within the iteration, and a failure to
@@ -221,7 +229,7 @@ SearchResult searchOpenCvLoop(const Problem& problem, EssentialSolver& solver, R
         // N = m the loop returns the kernel's model with every point marked; the problem's
         // threshold is kept.)
         Mat err;
-        callback->computeError(problem.p1, problem.p2, model.rowRange(0, 3), err);
+        callback->computeError(p1, p2, model.rowRange(0, 3), err);
         float* e = err.ptr<float>();
         std::nth_element(e, e + n / 2, e + n);
         const double median = e[n / 2];

@@ -85,8 +85,8 @@ constexpr double kInFrontMaxPlainCostRatio = 1.25;
 
 } // namespace
 
-Mat estimate(const Problem& problem, const EssentialParams& params, OutputArray mask,
-             MaskWriting maskWriting, EssentialReport* report, int64 start)
+Mat estimate(const Problem& problem, InlierTest callTest, const EssentialParams& params,
+             OutputArray mask, MaskWriting maskWriting, EssentialReport* report, int64 start)
 {
     const int n = problem.size();
     EssentialReport local;
@@ -129,13 +129,14 @@ Mat estimate(const Problem& problem, const EssentialParams& params, OutputArray 
         solvers::useIdentityStartOnlyIfIterative(*solver, /*keepCheirality=*/false);
     const int64 tSearch = getTickCount();
     search::SearchSettings settings;
+    settings.test = callTest;
     settings.confidence = params.confidence;
     settings.maxIters = params.maxIterations;
     settings.preemptiveHypotheses = params.preemptiveHypotheses;
     settings.preemptiveBlockSize = params.preemptiveBlockSize;
     settings.lo.iterations = params.loIterations;
     settings.lo.sampleSize = params.loSampleSize;
-    settings.lo.scale = problem.threshold * kLoScaleFraction;
+    settings.lo.scale = callTest.threshold * kLoScaleFraction;
     settings.lo.band = kLoBand;
     settings.prosac = params.sampler == SAMPLING_PROSAC;
     settings.napsacEvery = params.sampler == SAMPLING_NAPSAC               ? 1
@@ -173,8 +174,6 @@ Mat estimate(const Problem& problem, const EssentialParams& params, OutputArray 
         settings.setSolverThreshold = false;
         found = runSearch();
     }
-    // The call's inlier test; the search's differs in its threshold for LMedS (found.threshold).
-    const InlierTest callTest = problem.inlierTest();
     if (found.found && params.inFrontCheck && params.engine == ENGINE_ADAPTIVE &&
         params.score == SCORE_METHOD_MSAC && settings.sampleCheirality) {
         // A winner with many inliers behind the cameras is a wrong model that the plain MSAC cost
@@ -224,7 +223,7 @@ Mat estimate(const Problem& problem, const EssentialParams& params, OutputArray 
         params.score == SCORE_METHOD_MSAC) {
         const scoring::Score before = scoring::scoreMsac(found.E, problem, callTest);
         const degeneracy::PlaneParallaxResult checked =
-            degeneracy::checkPlaneAndParallax(problem, found.E, before, rng);
+            degeneracy::checkPlaneAndParallax(problem, callTest, found.E, before, rng);
         if (checked.improved) {
             found.E = checked.E;
             found.inliers = checked.score.inliers;
@@ -243,7 +242,7 @@ Mat estimate(const Problem& problem, const EssentialParams& params, OutputArray 
     Matx33d E = found.E;
     if (params.refine) {
         const refine::FinalRefinementResult refined =
-            refine::refineFinal(problem, found.E, found.threshold);
+            refine::refineFinal(problem, found.E, searched);
         rep.refineIterations = refined.iterations;
         if (refined.improved) {
             // The refinement minimises a smooth robust loss on the points near the winner, not
@@ -276,8 +275,7 @@ Mat estimate(const Problem& problem, const EssentialParams& params, OutputArray 
     if (report && params.recoverPose) {
         const int64 tPose = getTickCount();
         pose::PoseResult pr;
-        if (pose::recoverPoseNormalised(E, problem.p1.data(), problem.p2.data(), n, inliers.data(),
-                                        nullptr, pr)) {
+        if (pose::recoverPoseNormalised(E, problem, inliers.data(), nullptr, pr)) {
             rep.R = pr.R;
             rep.t = pr.t;
             rep.pointsInFront = pr.inFront;

@@ -18,11 +18,12 @@
 namespace cv {
 namespace essential {
 
-/** E of unit Frobenius norm (empty when there is none) for `problem` under `params`; the mask goes
-into the caller's array as `maskWriting` says; `report`, if not null, receives what the call did;
-`start` is the call's tick count (its time budget and report times count from it). */
-Mat estimate(const Problem& problem, const EssentialParams& params, OutputArray mask,
-             MaskWriting maskWriting, EssentialReport* report, int64 start);
+/** E of unit Frobenius norm (empty when there is none) for `problem` under `params`, `test` being
+the call's inlier test (params.threshold in normalised units, on the distance params choose); the
+mask goes into the caller's array as `maskWriting` says; `report`, if not null, receives what the
+call did; `start` is the call's tick count (its time budget and report times count from it). */
+Mat estimate(const Problem& problem, InlierTest test, const EssentialParams& params,
+             OutputArray mask, MaskWriting maskWriting, EssentialReport* report, int64 start);
 
 } // namespace essential
 } // namespace cv

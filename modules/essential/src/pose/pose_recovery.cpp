@@ -58,9 +58,10 @@ bool poseCandidates(const Matx33d& E, Eigen::Matrix3d& R1, Eigen::Matrix3d& R2, 
     return true;
 }
 
-bool recoverPoseNormalised(const Matx33d& E, const Point2d* x1, const Point2d* x2, int n,
-                           const uchar* maskIn, uchar* maskOut, PoseResult& out)
+bool recoverPoseNormalised(const Matx33d& E, const Problem& points, const uchar* maskIn,
+                           uchar* maskOut, PoseResult& out)
 {
+    const int n = points.size();
     Eigen::Matrix3d R1, R2;
     Eigen::Vector3d t;
     if (!poseCandidates(E, R1, R2, t)) {
@@ -77,7 +78,8 @@ bool recoverPoseNormalised(const Matx33d& E, const Point2d* x1, const Point2d* x
     for (int i = 0; i < n; ++i) {
         if (maskIn && !maskIn[i]) continue;
         for (int c = 0; c < 4; ++c)
-            if (inFront(*rotations[c], translations[c], x1[i], x2[i])) ++counts[c];
+            if (inFront(*rotations[c], translations[c], points.point1(i), points.point2(i)))
+                ++counts[c];
     }
     const int best = static_cast<int>(std::max_element(counts, counts + 4) - counts);
 
@@ -85,7 +87,8 @@ bool recoverPoseNormalised(const Matx33d& E, const Point2d* x1, const Point2d* x
         // maskOut may alias maskIn: read each entry before writing it.
         for (int i = 0; i < n; ++i) {
             const bool used = !maskIn || maskIn[i] != 0;
-            maskOut[i] = (used && inFront(*rotations[best], translations[best], x1[i], x2[i]))
+            maskOut[i] = (used && inFront(*rotations[best], translations[best], points.point1(i),
+                                          points.point2(i)))
                              ? uchar(1)
                              : uchar(0);
         }

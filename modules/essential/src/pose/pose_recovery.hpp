@@ -7,6 +7,8 @@
 #ifndef OPENCV_ESSENTIAL_POSE_POSE_RECOVERY_HPP
 #define OPENCV_ESSENTIAL_POSE_POSE_RECOVERY_HPP
 
+#include "input/problem.hpp"
+
 #include <opencv2/core.hpp>
 
 #include <Eigen/Core>
@@ -30,13 +32,13 @@ bool poseCandidates(const Matx33d& E, Eigen::Matrix3d& R1, Eigen::Matrix3d& R2, 
 /** Chooses among the four poses of E the one with the most points in front of both cameras.
 
 @param E essential matrix.
-@param x1, x2 n normalised correspondences.
+@param points the normalised correspondences (n = points.size()).
 @param maskIn if not null, only points with maskIn[i] != 0 take part.
 @param maskOut if not null, set to 1 for the points that take part and lie in front of both cameras
 for the chosen pose, 0 otherwise (may alias maskIn).
 @return false if E cannot be decomposed (then `out` is untouched and maskOut is zeroed). */
-bool recoverPoseNormalised(const Matx33d& E, const Point2d* x1, const Point2d* x2, int n,
-                           const uchar* maskIn, uchar* maskOut, PoseResult& out);
+bool recoverPoseNormalised(const Matx33d& E, const Problem& points, const uchar* maskIn,
+                           uchar* maskOut, PoseResult& out);
 
 } // namespace pose
 } // namespace essential

@@ -47,10 +47,11 @@ bool counts(const Matx33d& R, const Vec3d& t, const Vec4d& X, double distanceThr
 
 } // namespace
 
-bool recoverPoseDistanceThresh(const Matx33d& E, const Point2d* x1, const Point2d* x2, int n,
-                               const uchar* maskIn, double distanceThresh, uchar* maskOut,
-                               Vec4d* triangulated, PoseResult& out)
+bool recoverPoseDistanceThresh(const Matx33d& E, const Problem& points, const uchar* maskIn,
+                               double distanceThresh, uchar* maskOut, Vec4d* triangulated,
+                               PoseResult& out)
 {
+    const int n = points.size();
     Eigen::Matrix3d R1e, R2e;
     Eigen::Vector3d te;
     if (!poseCandidates(E, R1e, R2e, te)) {
@@ -73,7 +74,8 @@ bool recoverPoseDistanceThresh(const Matx33d& E, const Point2d* x1, const Point2
     for (int c = 0; c < 4; ++c)
         for (int i = 0; i < n; ++i) {
             if (maskIn && !maskIn[i]) continue;
-            const Vec4d X = triangulateDlt(rotations[c], translations[c], x1[i], x2[i]);
+            const Vec4d X =
+                triangulateDlt(rotations[c], translations[c], points.point1(i), points.point2(i));
             if (counts(rotations[c], translations[c], X, distanceThresh)) {
                 inFront[static_cast<size_t>(c) * n + i] = 1;
                 ++counted[c];
@@ -85,7 +87,8 @@ bool recoverPoseDistanceThresh(const Matx33d& E, const Point2d* x1, const Point2
                   inFront.begin() + static_cast<long>(best + 1) * n, maskOut);
     if (triangulated)
         for (int i = 0; i < n; ++i)
-            triangulated[i] = triangulateDlt(rotations[best], translations[best], x1[i], x2[i]);
+            triangulated[i] = triangulateDlt(rotations[best], translations[best], points.point1(i),
+                                             points.point2(i));
     out.R = rotations[best];
     out.t = translations[best];
     out.inFront = counted[best];

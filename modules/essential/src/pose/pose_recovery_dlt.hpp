@@ -28,9 +28,9 @@ Vec4d triangulateDlt(const Matx33d& R, const Vec3d& t, const Point2d& q1, const 
 closer than distanceThresh in both (depths in units of the baseline, |t| = 1), every point
 triangulated by triangulateDlt. Same arguments and result as recoverPoseNormalised; if
 `triangulated` is not null it receives the n homogeneous points of the chosen pose. */
-bool recoverPoseDistanceThresh(const Matx33d& E, const Point2d* x1, const Point2d* x2, int n,
-                               const uchar* maskIn, double distanceThresh, uchar* maskOut,
-                               Vec4d* triangulated, PoseResult& out);
+bool recoverPoseDistanceThresh(const Matx33d& E, const Problem& points, const uchar* maskIn,
+                               double distanceThresh, uchar* maskOut, Vec4d* triangulated,
+                               PoseResult& out);
 
 } // namespace pose
 } // namespace essential

@@ -93,12 +93,11 @@ void writePose(const pose::PoseResult& result, OutputArray R, OutputArray t)
 /** The cheirality test on normalised points. distanceThresh <= 0 means the module's test without a
 distance cut; a positive value OpenCV's DLT test with that cut (then triangulatedPoints, if
 requested, receives 4 x N homogeneous points). Returns the number of points in front. */
-int recoverPoseNormalisedPoints(const Matx33d& E, const std::vector<Point2d>& n1,
-                                const std::vector<Point2d>& n2, OutputArray R, OutputArray t,
-                                InputOutputArray mask, double distanceThresh,
+int recoverPoseNormalisedPoints(const Matx33d& E, const Problem& points, OutputArray R,
+                                OutputArray t, InputOutputArray mask, double distanceThresh,
                                 OutputArray triangulatedPoints)
 {
-    const int n = static_cast<int>(n1.size());
+    const int n = points.size();
     const std::vector<uchar> maskIn = readMask(mask, n);
     const uchar* in = maskIn.empty() ? nullptr : maskIn.data();
     std::vector<uchar> inFront(static_cast<size_t>(n), 0);
@@ -106,9 +105,8 @@ int recoverPoseNormalisedPoints(const Matx33d& E, const std::vector<Point2d>& n1
     bool ok;
     if (distanceThresh > 0) {
         std::vector<Vec4d> X(triangulatedPoints.needed() ? static_cast<size_t>(n) : 0);
-        ok =
-            pose::recoverPoseDistanceThresh(E, n1.data(), n2.data(), n, in, distanceThresh,
-                                            inFront.data(), X.empty() ? nullptr : X.data(), result);
+        ok = pose::recoverPoseDistanceThresh(E, points, in, distanceThresh, inFront.data(),
+                                             X.empty() ? nullptr : X.data(), result);
         if (triangulatedPoints.needed()) {
             if (ok)
                 transpose(Mat(n, 4, CV_64F, X.data()), triangulatedPoints);
@@ -116,7 +114,7 @@ int recoverPoseNormalisedPoints(const Matx33d& E, const std::vector<Point2d>& n1
                 triangulatedPoints.release();
         }
     } else {
-        ok = pose::recoverPoseNormalised(E, n1.data(), n2.data(), n, in, inFront.data(), result);
+        ok = pose::recoverPoseNormalised(E, points, in, inFront.data(), result);
     }
     // E cannot be decomposed (the zero matrix): no pose (R = I, t = 0), no point in front.
     if (!ok) result = pose::PoseResult();
@@ -137,7 +135,8 @@ int recoverPoseFromEssential(InputArray E, InputArray points1, InputArray points
     const std::vector<Point2d> n2 = normalisePoints(p2, K);
     checkNormalisedPoints(n1, "points1");
     checkNormalisedPoints(n2, "points2");
-    return recoverPoseNormalisedPoints(Em, n1, n2, R, t, mask, distanceThresh, triangulatedPoints);
+    return recoverPoseNormalisedPoints(Em, makeProblem(n1, n2), R, t, mask, distanceThresh,
+                                       triangulatedPoints);
 }
 
 } // namespace
@@ -187,6 +186,7 @@ int recoverPoseIter(InputArray points1, InputArray points2, InputArray cameraMat
         writePose(pose::PoseResult(), R, t);
         return 0;
     }
+    const Problem points = makeProblem(n1, n2);
     // Exactly five points may give several solutions (stacked): keep the one with the most
     // points in front of both cameras (the first on ties).
     Matx33d best;
@@ -195,8 +195,7 @@ int recoverPoseIter(InputArray points1, InputArray points2, InputArray cameraMat
         Matx33d candidate;
         found.rowRange(s, s + 3).copyTo(Mat(3, 3, CV_64F, candidate.val));
         pose::PoseResult result;
-        if (pose::recoverPoseNormalised(candidate, n1.data(), n2.data(),
-                                        static_cast<int>(n1.size()), nullptr, nullptr, result) &&
+        if (pose::recoverPoseNormalised(candidate, points, nullptr, nullptr, result) &&
             result.inFront > bestInFront) {
             best = candidate;
             bestInFront = result.inFront;
@@ -204,7 +203,7 @@ int recoverPoseIter(InputArray points1, InputArray points2, InputArray cameraMat
     }
     if (bestInFront < 0) found.rowRange(0, 3).copyTo(Mat(3, 3, CV_64F, best.val));
     if (E.needed()) Mat(best).copyTo(E);
-    return recoverPoseNormalisedPoints(best, n1, n2, R, t, mask, 0.0, noArray());
+    return recoverPoseNormalisedPoints(best, points, R, t, mask, 0.0, noArray());
 }
 
 // The original spellings, kept for existing callers: the same functions under cv::recoverPose's

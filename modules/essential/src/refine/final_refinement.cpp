@@ -40,9 +40,10 @@ double estimateNoise(const Problem& problem, const Matx33d& E, double threshold,
     return kMadToSigma * std::sqrt(squared[middle]);
 }
 
-FinalRefinementResult refineFinal(const Problem& problem, const Matx33d& E0, double threshold,
+FinalRefinementResult refineFinal(const Problem& problem, const Matx33d& E0, InlierTest test,
                                   const FinalRefinementSettings& settings)
 {
+    const double threshold = test.threshold;
     FinalRefinementResult result;
     result.E = E0;
     const int n = problem.size();
@@ -66,21 +67,18 @@ FinalRefinementResult refineFinal(const Problem& problem, const Matx33d& E0, dou
         if (tukey) band = std::max(band, scale);
         IrlsSettings irls = settings.irls;
         irls.loss = tukey ? RobustLoss::Tukey : RobustLoss::Cauchy;
-        int count =
-            scoring::inlierMask(E, problem, problem.inlierTest().withThreshold(band), use.data());
+        int count = scoring::inlierMask(E, problem, test.withThreshold(band), use.data());
         if (settings.inFrontOnly && count >= kMinPoints) {
             // An E with no decomposition (it cannot happen for a search winner, which has one)
             // keeps the band's points.
             pose::PoseResult pose;
-            if (pose::recoverPoseNormalised(E, problem.p1.data(), problem.p2.data(), n, use.data(),
-                                            inFront.data(), pose)) {
+            if (pose::recoverPoseNormalised(E, problem, use.data(), inFront.data(), pose)) {
                 use.swap(inFront);
                 count = pose.inFront;
             }
         }
         if (count < kMinPoints) break;
-        const Problem selected =
-            maskedProblem(problem, use.data(), InlierTest{threshold, DISTANCE_SAMPSON});
+        const Problem selected = maskedProblem(problem, use.data());
         const IrlsResult refined = refineIrls(selected, E, scale, irls);
         result.iterations += refined.iterations;
         result.pointsUsed = count;

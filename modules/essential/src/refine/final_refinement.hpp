@@ -99,12 +99,13 @@ of the points within `window` thresholds of E; 0 if fewer than minPoints are. */
 double estimateNoise(const Problem& problem, const Matx33d& E, double threshold, double window,
                      int minPoints);
 
-/** Refines E0, the search winner for the (normalised) inlier threshold `threshold`, as
+/** Refines E0, the search winner for the inlier test `test` (the threshold in normalised units;
+the distance selects the points near E0, the robust cost is on the Sampson distance), as
 FinalRefinementSettings describes: the points near E0 (and in front of both cameras for its pose)
 by IRLS with a robust loss whose scale follows the estimated noise. Fewer than 5 such points leave
 E0 unchanged. */
 FinalRefinementResult
-refineFinal(const Problem& problem, const Matx33d& E0, double threshold,
+refineFinal(const Problem& problem, const Matx33d& E0, InlierTest test,
             const FinalRefinementSettings& settings = FinalRefinementSettings());
 
 } // namespace refine

@@ -22,14 +22,14 @@ struct Box
     double x0, y0, sx, sy; //!< origin and cell size per cell count 1 (divided by c at use)
 };
 
-Box boundingBox(const Point2d* p, int n)
+Box boundingBox(const std::vector<double>& x, const std::vector<double>& y)
 {
-    double x0 = p[0].x, x1 = p[0].x, y0 = p[0].y, y1 = p[0].y;
-    for (int i = 1; i < n; ++i) {
-        x0 = std::min(x0, p[i].x);
-        x1 = std::max(x1, p[i].x);
-        y0 = std::min(y0, p[i].y);
-        y1 = std::max(y1, p[i].y);
+    double x0 = x[0], x1 = x[0], y0 = y[0], y1 = y[0];
+    for (size_t i = 1; i < x.size(); ++i) {
+        x0 = std::min(x0, x[i]);
+        x1 = std::max(x1, x[i]);
+        y0 = std::min(y0, y[i]);
+        y1 = std::max(y1, y[i]);
     }
     // A degenerate extent (all on a line) still gets cells of positive size.
     return Box{x0, y0, std::max(x1 - x0, 1e-12), std::max(y1 - y0, 1e-12)};
@@ -43,18 +43,19 @@ int cellOf(double v, double origin, double extent, int cells)
 
 } // namespace
 
-NapsacSampler::NapsacSampler(const Point2d* p1, const Point2d* p2, int n, int m) : n_(n), m_(m)
+NapsacSampler::NapsacSampler(const Problem& points, int m) : n_(points.size()), m_(m)
 {
+    const int n = n_;
     if (n <= 0) return;
-    const Box b1 = boundingBox(p1, n), b2 = boundingBox(p2, n);
+    const Box b1 = boundingBox(points.x1, points.y1), b2 = boundingBox(points.x2, points.y2);
     std::vector<std::int64_t> key(static_cast<size_t>(n));
     for (int cells : kCellsPerSide) {
         Level level;
         for (int i = 0; i < n; ++i) {
-            const std::int64_t c1x = cellOf(p1[i].x, b1.x0, b1.sx, cells);
-            const std::int64_t c1y = cellOf(p1[i].y, b1.y0, b1.sy, cells);
-            const std::int64_t c2x = cellOf(p2[i].x, b2.x0, b2.sx, cells);
-            const std::int64_t c2y = cellOf(p2[i].y, b2.y0, b2.sy, cells);
+            const std::int64_t c1x = cellOf(points.x1[i], b1.x0, b1.sx, cells);
+            const std::int64_t c1y = cellOf(points.y1[i], b1.y0, b1.sy, cells);
+            const std::int64_t c2x = cellOf(points.x2[i], b2.x0, b2.sx, cells);
+            const std::int64_t c2y = cellOf(points.y2[i], b2.y0, b2.sy, cells);
             key[static_cast<size_t>(i)] = ((c1x * cells + c1y) * cells + c2x) * cells + c2y;
         }
         level.order.resize(static_cast<size_t>(n));

@@ -10,6 +10,8 @@
 #ifndef OPENCV_ESSENTIAL_SAMPLING_NAPSAC_SAMPLER_HPP
 #define OPENCV_ESSENTIAL_SAMPLING_NAPSAC_SAMPLER_HPP
 
+#include "input/problem.hpp"
+
 #include <opencv2/core.hpp>
 
 #include <vector>
@@ -27,8 +29,8 @@ uniformly from that cell. */
 class NapsacSampler
 {
 public:
-    /** `p1`, `p2`: the n correspondences (any units), samples of `m` points. */
-    NapsacSampler(const Point2d* p1, const Point2d* p2, int n, int m);
+    /** Samples of `m` of the correspondences `points` (any units). */
+    NapsacSampler(const Problem& points, int m);
 
     /** Draws a local sample into `indices` (m distinct indices); false (nothing drawn) when the
     seed has fewer than m - 1 neighbours at every level. */

@@ -68,8 +68,8 @@ struct SampleBuffer
                 drawUniformSample(rng, problem.size(), sampleSize, indices.data());
         }
         for (int i = 0; i < sampleSize; ++i) {
-            x1[i] = problem.p1[indices[i]];
-            x2[i] = problem.p2[indices[i]];
+            x1[i] = problem.point1(indices[i]);
+            x2[i] = problem.point2(indices[i]);
         }
         if (hasCoincidentPoints()) return 0;
         const int count = solver.solve(x1.data(), x2.data(), rng, solutions.data());

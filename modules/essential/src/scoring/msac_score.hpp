@@ -41,7 +41,7 @@ inliers among them). The MSAC early exit at bestCost applies as well (checked ev
 Score scoreMsacSprt(const Matx33d& E, const Problem& problem, InlierTest test, double bestCost,
                     const SprtTest& sprt, bool& rejected);
 
-/** Squared Sampson distance of every point to E, whatever the problem's inlier distance (LMedS
+/** Squared Sampson distance of every point to E, whatever the call's inlier distance (LMedS
 ranks by it, as OpenCV's LMEDS does). */
 void sampsonErrors(const Matx33d& E, const Problem& problem, double* errors);
 

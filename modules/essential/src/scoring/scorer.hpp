@@ -21,12 +21,13 @@ namespace scoring {
 struct Scorer
 {
     const Problem* points = nullptr;
+    InlierTest test;
     bool inFront = false;
 
     Score operator()(const Matx33d& E, double bound) const
     {
-        return inFront ? scoreMsacInFront(E, *points, points->inlierTest(), bound)
-                       : scoreMsac(E, *points, points->inlierTest(), bound);
+        return inFront ? scoreMsacInFront(E, *points, test, bound)
+                       : scoreMsac(E, *points, test, bound);
     }
 };
 

@@ -45,7 +45,9 @@ Mat solveExactlyFive(const Problem& problem, EssentialSolver& solver, RNG& rng,
     const int starts = solver.successRate() >= 0.99 ? 1 : kFivePointStarts;
     std::vector<Matx33d> buffer(static_cast<size_t>(solver.maxSolutions()));
     std::vector<Eigen::Matrix3d> found;
-    std::vector<Point2d> rotated(5);
+    std::vector<Point2d> rotated(5), second(5);
+    for (int i = 0; i < 5; ++i)
+        second[static_cast<size_t>(i)] = problem.point2(i);
     for (int s = 0; s < starts; ++s) {
         Matx33d Q = Matx33d::eye();
         if (s > 0) {
@@ -55,12 +57,12 @@ Mat solveExactlyFive(const Problem& problem, EssentialSolver& solver, RNG& rng,
         }
         bool usable = true;
         for (int i = 0; i < 5; ++i) {
-            const Vec3d q = Q * Vec3d(problem.p1[i].x, problem.p1[i].y, 1.0);
+            const Vec3d q = Q * Vec3d(problem.x1[i], problem.y1[i], 1.0);
             usable &= q[2] > 0.3; // keep the rotated coordinates bounded
             rotated[i] = Point2d(q[0] / q[2], q[1] / q[2]);
         }
         if (!usable) continue;
-        const int count = solver.solve(rotated.data(), problem.p2.data(), rng, buffer.data());
+        const int count = solver.solve(rotated.data(), second.data(), rng, buffer.data());
         ++report.hypothesesGenerated;
         report.hypothesesConverged += std::max(0, count);
         for (int h = 0; h < std::min(count, static_cast<int>(buffer.size())); ++h) {

@@ -21,6 +21,10 @@ namespace search {
 
 struct SearchSettings
 {
+    /** The call's inlier test (threshold in normalised units): what MSAC, SPRT and local
+    optimisation score with and the threshold the solver is given; LMedS derives its own threshold
+    from the data and keeps the distance. */
+    InlierTest test;
     double confidence = 0.999;
     int maxIters = 1000;
     /** The search returns its best model so far once this passes (checked every few samples). */
@@ -53,7 +57,7 @@ struct SearchSettings
     (solvers::essentialSampleIsInFront), before they are scored. Larger samples (robust) may hold
     outliers by design and are not checked. */
     bool sampleCheirality = true;
-    /** Adaptive MSAC and preemptive: pass the problem's threshold to the solver
+    /** Adaptive MSAC and preemptive: pass the call's threshold to the solver
     (EssentialSolver::setThreshold, once per estimate); off for a second search of the same
     estimate. */
     bool setSolverThreshold = true;
@@ -107,15 +111,14 @@ struct SearchResult
     }
 };
 
-/** A search's result before its first sample: the problem's threshold, which the solver is given
+/** A search's result before its first sample: the call's threshold, which the solver is given
 (SearchSettings::setSolverThreshold). */
-inline SearchResult beginSearch(const Problem& problem, EssentialSolver& solver,
-                                const SearchSettings& settings)
+inline SearchResult beginSearch(EssentialSolver& solver, const SearchSettings& settings)
 {
     SearchResult result;
-    result.threshold = problem.threshold;
+    result.threshold = settings.test.threshold;
     if (settings.setSolverThreshold)
-        solver.setThreshold(problem.threshold); // once per estimate (EssentialSolver)
+        solver.setThreshold(settings.test.threshold); // once per estimate (EssentialSolver)
     return result;
 }
 

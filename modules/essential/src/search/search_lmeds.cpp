@@ -95,7 +95,7 @@ SearchResult searchLmeds(const Problem& problem, EssentialSolver& solver, RNG& r
     result.threshold = std::max(sigma, kLmedsMinThreshold);
     std::vector<uchar> mask(static_cast<size_t>(n));
     result.inliers = scoring::inlierMask(
-        result.E, problem, problem.inlierTest().withThreshold(result.threshold), mask.data());
+        result.E, problem, settings.test.withThreshold(result.threshold), mask.data());
     return result;
 }
 

@@ -48,7 +48,7 @@ constexpr double kExtendedConfidence = 0.6321205588285577;
 SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rng,
                         const SearchSettings& settings)
 {
-    SearchResult result = beginSearch(problem, solver, settings);
+    SearchResult result = beginSearch(solver, settings);
     const int n = problem.size();
     sampling::SampleBuffer buffer(solver, settings.sampleCheirality);
     if (n < buffer.sampleSize) return result;
@@ -76,8 +76,7 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
     }
     std::unique_ptr<sampling::NapsacSampler> napsac;
     if (settings.napsacEvery > 0) {
-        napsac.reset(new sampling::NapsacSampler(problem.p1.data(), problem.p2.data(), n,
-                                                 buffer.sampleSize));
+        napsac.reset(new sampling::NapsacSampler(problem, buffer.sampleSize));
         buffer.napsac = napsac.get();
         buffer.localEvery = settings.napsacEvery;
     }
@@ -93,7 +92,7 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
         scoringPoints = &shuffled;
     }
     scoring::Sprt sprt(kSprtHypothesisCost, kSprtInitialDelta);
-    const scoring::Scorer score{scoringPoints, settings.scoreInFront};
+    const scoring::Scorer score{scoringPoints, settings.test, settings.scoreInFront};
     local_optimisation::LocalOptimisation lo(problem, solver, settings.lo, score,
                                              settings.sampleCheirality, rng.state,
                                              buffer.sampleSize);
@@ -136,7 +135,7 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
         const double wMax =
             std::min(1.0, std::pow(1.0 / (s * confidenceCap), 1.0 / buffer.sampleSize));
         const int inliersNeeded = degeneracy::significantInliers(
-            best.E, problem, problem.inlierTest(), buffer.sampleSize, std::max(cap, 1));
+            best.E, problem, settings.test, buffer.sampleSize, std::max(cap, 1));
         extensionVerdict = inliersNeeded >= 0 && wMax * n >= inliersNeeded ? 1 : 0;
         return extensionVerdict == 1;
     };
@@ -164,7 +163,7 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
             settings.minSampleCap));
         int need = stopRule(double(best.score.inliers) / n);
         if (!prosac || prosac->isUniform()) return need;
-        scoring::inlierMask(best.E, problem, problem.inlierTest(), mask.data());
+        scoring::inlierMask(best.E, problem, settings.test, mask.data());
         const int from = std::max(prosac->poolSize(), prosacStop->minLength());
         int length = n, inliers = 0;
         for (int k = 0; k < n - 1; ++k) {
@@ -188,8 +187,7 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
     while (result.iterations < needed) {
         if ((result.iterations & 7) == 7 && settings.deadline.passed()) break;
         if (settings.localSamplesInBudget && !napsac && result.iterations >= confidenceCap) {
-            napsac.reset(new sampling::NapsacSampler(problem.p1.data(), problem.p2.data(), n,
-                                                     buffer.sampleSize));
+            napsac.reset(new sampling::NapsacSampler(problem, buffer.sampleSize));
             buffer.napsac = napsac.get();
             buffer.localEvery = 2;
         }
@@ -219,9 +217,8 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
                     : best.score.cost;
             if (sprt.active()) {
                 bool rejected = false;
-                s = scoring::scoreMsacSprt(buffer.solutions[h], *scoringPoints,
-                                           scoringPoints->inlierTest(), bound, sprt.test(),
-                                           rejected);
+                s = scoring::scoreMsacSprt(buffer.solutions[h], *scoringPoints, settings.test,
+                                           bound, sprt.test(), rejected);
                 result.pointsScored += s.scored;
                 if (rejected) {
                     ++result.sprtRejections;

@@ -36,13 +36,13 @@ Problem shuffledCopy(const Problem& problem, RNG& rng)
     std::iota(order.begin(), order.end(), 0);
     for (int i = n - 1; i > 0; --i)
         std::swap(order[i], order[rng.uniform(0, i + 1)]);
-    return subsetProblem(problem, order.data(), n, problem.inlierTest());
+    return subsetProblem(problem, order.data(), n);
 }
 
 SearchResult searchPreemptive(const Problem& problem, EssentialSolver& solver, RNG& rng,
                               const SearchSettings& settings)
 {
-    SearchResult result = beginSearch(problem, solver, settings);
+    SearchResult result = beginSearch(solver, settings);
     const int n = problem.size();
     sampling::SampleBuffer buffer(solver, settings.sampleCheirality);
     if (n < buffer.sampleSize) return result;
@@ -80,7 +80,7 @@ SearchResult searchPreemptive(const Problem& problem, EssentialSolver& solver, R
         const Clock::time_point scoreStart = Clock::now();
         for (const Matx33d& E : hypotheses)
             result.pointsScored +=
-                scoring::scoreMsacRange(E, data, data.inlierTest(), 0, probePoints).scored;
+                scoring::scoreMsacRange(E, data, settings.test, 0, probePoints).scored;
         const double tPoint =
             msBetween(scoreStart, Clock::now()) / (double(hypotheses.size()) * probePoints);
         const double perHypothesis = tGen + std::min(2.0 * B, double(n)) * tPoint;
@@ -101,8 +101,7 @@ SearchResult searchPreemptive(const Problem& problem, EssentialSolver& solver, R
     for (int begin = 0; begin < n && alive.size() > 1; begin += B) {
         const int end = std::min(n, begin + B);
         for (int h : alive)
-            cost[h] +=
-                scoring::scoreMsacRange(hypotheses[h], data, data.inlierTest(), begin, end).cost;
+            cost[h] += scoring::scoreMsacRange(hypotheses[h], data, settings.test, begin, end).cost;
         result.pointsScored += int64(end - begin) * int64(alive.size());
         const size_t keep = static_cast<size_t>(preemptiveSurvivors(M, end, B));
         if (alive.size() > keep) {
@@ -115,7 +114,7 @@ SearchResult searchPreemptive(const Problem& problem, EssentialSolver& solver, R
     const int best = *std::min_element(alive.begin(), alive.end(),
                                        [&](int a, int b) { return cost[a] < cost[b]; });
     result.E = hypotheses[best];
-    result.inliers = scoring::scoreMsac(result.E, problem, problem.inlierTest()).inliers;
+    result.inliers = scoring::scoreMsac(result.E, problem, settings.test).inliers;
     result.found = result.inliers >= buffer.sampleSize;
     return result;
 }

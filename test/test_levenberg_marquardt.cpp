@@ -36,9 +36,10 @@ template <class Residuals, bool Fused = false> struct SquareModel
     double linearise(const Point5& x, SquareSystem& system) const
     {
         ++linearisations;
-        system.changed();
-        residuals(x.v, system.r, &system.J);
-        return system.r.squaredNorm();
+        return system.write([&](Vector5& r, Matrix5& J) {
+            residuals(x.v, r, &J);
+            return r.squaredNorm();
+        });
     }
     double cost(const Point5& x) const
     {

@@ -47,25 +47,33 @@ struct NormalEquations
 /** The square system of a minimal problem, five residuals r and their 5x5 Jacobian J. Undamped
 (Gauss-Newton) it is solved as it stands, J d = -r, which keeps the condition number of J rather
 than of J^T J; damped, through its normal equations, formed once per linearisation. */
-struct SquareSystem
+class SquareSystem
 {
-    Matrix5 J;
-    Vector5 r;
+public:
+    /** The model writes r and J through `evaluate(r, J)`, whose result (the cost) is returned; the
+    normal equations of the previous ones are dropped with them. */
+    template <class Evaluate> double write(Evaluate&& evaluate)
+    {
+        normalFormed_ = false;
+        return evaluate(r_, J_);
+    }
+    const Vector5& r() const { return r_; }
+    const Matrix5& J() const { return J_; }
 
     bool solve(double lambda, Vector5& step)
     {
-        if (lambda == 0.0) return solvePartialPivot<5>(J, -r, step) && step.allFinite();
+        if (lambda == 0.0) return solvePartialPivot<5>(J_, -r_, step) && step.allFinite();
         if (!normalFormed_) {
-            normal_.A = J.transpose() * J;
-            normal_.g = J.transpose() * r;
+            normal_.A = J_.transpose() * J_;
+            normal_.g = J_.transpose() * r_;
             normalFormed_ = true;
         }
         return normal_.solve(lambda, step);
     }
-    /** Called by the model whenever it writes J and r. */
-    void changed() { normalFormed_ = false; }
 
 private:
+    Matrix5 J_;
+    Vector5 r_;
     NormalEquations normal_;
     bool normalFormed_ = false;
 };
@@ -120,8 +128,9 @@ struct LmResult
     int trials = 0;     //!< LM: trial steps evaluated
 };
 
-/** What a damped iteration did. */
-enum class StepOutcome { Accepted, Rejected, Singular, DampingLimit };
+/** What a damped iteration did: a step accepted; every attempt rejected; rejected until the run's
+trial cap stopped it (LmSettings::maxTrials); a singular system; lambda past its ceiling. */
+enum class StepOutcome { Accepted, Rejected, TrialCap, Singular, DampingLimit };
 
 /** One LM iteration at the linearisation `system` of `x`, whose cost is `cost`: up to
 damping.attempts trial steps, the first that lowers the cost accepted (x, cost updated). With
@@ -139,7 +148,7 @@ inline StepOutcome dampedIteration(Model& model, Params& x, System& system, Syst
 {
     systemCurrent = true;
     for (int attempt = 0; attempt < damping.attempts; ++attempt) {
-        if (counts.trials >= maxTrials) return StepOutcome::Rejected;
+        if (counts.trials >= maxTrials) return StepOutcome::TrialCap;
         ++counts.trials;
         Vector5 step;
         if (!system.solve(lambda, step)) return StepOutcome::Singular;
@@ -161,7 +170,20 @@ inline StepOutcome dampedIteration(Model& model, Params& x, System& system, Syst
         lambda *= 10.0;
         if (lambda > damping.ceiling) return StepOutcome::DampingLimit;
     }
-    return StepOutcome::Rejected;
+    return counts.trials >= maxTrials ? StepOutcome::TrialCap : StepOutcome::Rejected;
+}
+
+/** The same for a model whose trial steps evaluate the cost alone (no fused linearisation), which
+needs no second system. */
+template <class Model, class Params, class System>
+inline StepOutcome dampedIteration(Model& model, Params& x, System& system, double& cost,
+                                   double& lambda, const Damping& damping, LmResult& counts,
+                                   int maxTrials, bool& systemCurrent)
+{
+    static_assert(!Model::kCostWithEquations, "a fused model needs the trial system");
+    System notWritten; // only a fused model's first trial writes it
+    return dampedIteration(model, x, system, notWritten, cost, lambda, damping, counts, maxTrials,
+                           systemCurrent);
 }
 
 /** Minimises the model's cost from x. Damping::initial 0 runs Gauss-Newton (undamped steps, every
@@ -230,8 +252,8 @@ inline LmResult minimise(Model& model, Params& x, System& system, const LmSettin
                 outcome == StepOutcome::Singular ? LmStatus::Singular : LmStatus::DampingLimit;
             return result;
         }
+        if (outcome == StepOutcome::TrialCap) break;
         if (outcome == StepOutcome::Rejected) {
-            if (result.trials >= settings.maxTrials) break;
             result.status = LmStatus::Stalled;
             return result;
         }

@@ -58,8 +58,10 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
     auto limited = [&](int samples) {
         return settings.sampleLimit > 0 ? std::min(samples, settings.sampleLimit) : samples;
     };
-    int cap = limited(std::max(termination::sampleCap(settings.maxIters, solver.successRate()),
-                               settings.minSampleCap));
+    // The confidence cap at any pose (before there is a model): the first cap, PROSAC's T_N and
+    // where the local samples of the extended budget begin.
+    const int confidenceCap = termination::sampleCap(settings.maxIters, solver.successRate());
+    int cap = limited(std::max(confidenceCap, settings.minSampleCap));
 
     // PROSAC: the samples follow the growth schedule with T_N = the confidence cap, so that the
     // pool covers every point by the time that cap is reached.
@@ -69,8 +71,7 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
         // T_N from the confidence cap alone, not the OpenCV-time budget (settings.minSampleCap,
         // about 20 times larger): the pool then grows at the pace PROSAC's schedule was set for,
         // and past T_N the sampler is uniform for the rest of the budget.
-        prosac.reset(new sampling::ProsacSampler(
-            n, buffer.sampleSize, termination::sampleCap(settings.maxIters, solver.successRate())));
+        prosac.reset(new sampling::ProsacSampler(n, buffer.sampleSize, confidenceCap));
         prosacStop.reset(new sampling::ProsacTermination(n, buffer.sampleSize));
         buffer.prosac = prosac.get();
     }
@@ -105,7 +106,7 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
     // Until there is a model, the confidence cap: a search that has solved no sample by then has
     // degenerate data (coincident or collinear points), and the extended budget (settings.
     // minSampleCap) is only for data whose best model is weak, decided with the first model.
-    int needed = std::min(cap, termination::sampleCap(settings.maxIters, solver.successRate()));
+    int needed = std::min(cap, confidenceCap);
 
     bool innerPending = false; // the best model waits for its inner samples
     auto localOptimise = [&]() {
@@ -128,16 +129,19 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
     // draw 20 maxIters samples for nothing (the fuzzer's replay went from 20 s to 256 s under the
     // sanitizers). Decided once, for the best model when the question first arises.
     int extensionVerdict = -1; // -1 undecided, 0 no, 1 yes
-    auto extensionCanPay = [&](int confidenceCap) {
+    auto extensionCanPay = [&](int modelCap) {
         if (extensionVerdict >= 0) return extensionVerdict == 1;
         if (!result.found) return true; // nothing to judge by yet; decided with the first model
         const double s = std::max(1e-3, solver.hitProbabilityAt(1.0, best.E));
-        const double wMax =
-            std::min(1.0, std::pow(1.0 / (s * confidenceCap), 1.0 / buffer.sampleSize));
+        const double wMax = std::min(1.0, std::pow(1.0 / (s * modelCap), 1.0 / buffer.sampleSize));
         const int inliersNeeded = degeneracy::significantInliers(
             best.E, problem, settings.test, buffer.sampleSize, std::max(cap, 1));
         extensionVerdict = inliersNeeded >= 0 && wMax * n >= inliersNeeded ? 1 : 0;
         return extensionVerdict == 1;
+    };
+    // The confidence cap at the best model's pose (the solver's rate there).
+    auto confidenceCapAtBest = [&]() {
+        return termination::sampleCap(settings.maxIters, solver.hitProbabilityAt(1.0, best.E));
     };
     // Past the confidence cap (the extended budget of settings.minSampleCap) the rule asks only for
     // kExtendedConfidence: the extension is there for data whose best model so far is so weakly
@@ -150,17 +154,14 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
                                  : termination::requiredIterations(confidence, p, cap);
         };
         const int need = rule(settings.confidence);
-        const int confidenceCap =
-            termination::sampleCap(settings.maxIters, solver.hitProbabilityAt(1.0, best.E));
-        if (settings.minSampleCap <= confidenceCap || need <= confidenceCap) return need;
-        if (!extensionCanPay(confidenceCap)) return confidenceCap;
-        return std::max(confidenceCap,
+        const int modelCap = confidenceCapAtBest();
+        if (settings.minSampleCap <= modelCap || need <= modelCap) return need;
+        if (!extensionCanPay(modelCap)) return modelCap;
+        return std::max(modelCap,
                         std::min(need, rule(std::min(settings.confidence, kExtendedConfidence))));
     };
     auto samplesNeeded = [&]() {
-        cap = limited(std::max(
-            termination::sampleCap(settings.maxIters, solver.hitProbabilityAt(1.0, best.E)),
-            settings.minSampleCap));
+        cap = limited(std::max(confidenceCapAtBest(), settings.minSampleCap));
         int need = stopRule(double(best.score.inliers) / n);
         if (!prosac || prosac->isUniform()) return need;
         scoring::inlierMask(best.E, problem, settings.test, mask.data());
@@ -183,7 +184,6 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
     // Local samples in the extended budget: once the confidence cap is passed (the data are hard:
     // the stopping rule has not been met), every other sample is spatially local, built here so
     // that easy calls never pay for the grid.
-    const int confidenceCap = termination::sampleCap(settings.maxIters, solver.successRate());
     while (result.iterations < needed) {
         if ((result.iterations & 7) == 7 && settings.deadline.passed()) break;
         if (settings.localSamplesInBudget && !napsac && result.iterations >= confidenceCap) {

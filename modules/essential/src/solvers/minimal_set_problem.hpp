@@ -107,8 +107,9 @@ struct MinimalSetModel
 
     double linearise(const geometry::EssentialPose& pose, optim::SquareSystem& system) const
     {
-        system.changed();
-        return evaluateMinimalSet(pose, x1, x2, system.r, system.J);
+        return system.write([&](geometry::Vector5d& r, geometry::Matrix5d& J) {
+            return evaluateMinimalSet(pose, x1, x2, r, J);
+        });
     }
     double cost(const geometry::EssentialPose& pose) const { return minimalSetCost(pose, x1, x2); }
 };

@@ -246,15 +246,15 @@ double RobustIrlsSolver::fit(EssentialPose& pose, const Point2d* x1, const Point
     damping.floor = 1e-9;
     damping.attempts = 3;
     double lambda = damping.initial;
-    optim::NormalEquations system, unused;
+    optim::NormalEquations system;
     optim::LmResult counts;
     for (int it = 0; it < settings_.maxIterations; ++it) {
         AnnealedSampleModel model{x1, x2, n, sigma * sigma};
         double cost = model.linearise(pose, system);
         bool systemCurrent = true;
         // A rejected iteration moves on to the next scale: the cost itself changes with it.
-        if (optim::dampedIteration(model, pose, system, unused, cost, lambda, damping, counts,
-                                   INT_MAX, systemCurrent) == optim::StepOutcome::Singular)
+        if (optim::dampedIteration(model, pose, system, cost, lambda, damping, counts, INT_MAX,
+                                   systemCurrent) == optim::StepOutcome::Singular)
             return HUGE_VAL;
         sigma = std::max(finalScale, sigma * settings_.scaleDecay);
     }

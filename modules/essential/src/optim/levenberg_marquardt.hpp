@@ -57,8 +57,6 @@ public:
         normalFormed_ = false;
         return evaluate(r_, J_);
     }
-    const Vector5& r() const { return r_; }
-    const Matrix5& J() const { return J_; }
 
     bool solve(double lambda, Vector5& step)
     {

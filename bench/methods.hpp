@@ -246,7 +246,8 @@ inline MethodOutcome runMethod(const Method& m, const cv::Matx33d& Kx,
     if (m.kind == MethodKind::PoseLib || m.kind == MethodKind::SupeRansac) {
         PoseEstimate e;
 #ifdef ESSENTIAL_BENCH_HAVE_POSELIB
-        if (m.kind == MethodKind::PoseLib) e = runPoseLib(p1, p2, Kx, m.threshold, m.maxIters);
+        if (m.kind == MethodKind::PoseLib)
+            e = runPoseLib(p1, p2, Kx, m.threshold, m.maxIters, seed);
 #endif
 #ifdef ESSENTIAL_BENCH_HAVE_SUPERANSAC
         if (m.kind == MethodKind::SupeRansac)

@@ -21,6 +21,7 @@
 
 #include <opencv2/essential.hpp>
 
+#include <cstdint>
 #include <vector>
 
 namespace essential_bench {
@@ -49,7 +50,8 @@ PoseEstimate runOurs(const std::vector<Point>& px1, const std::vector<Point>& px
 
 template <typename Point>
 PoseEstimate runPoseLib(const std::vector<Point>& px1, const std::vector<Point>& px2,
-                        const cv::Matx33d& K, double threshold, int maxIters)
+                        const cv::Matx33d& K, double threshold, int maxIters,
+                        std::uint64_t seed = 0)
 {
     PoseEstimate e;
     const double t0 = threadCpuMs();
@@ -64,6 +66,8 @@ PoseEstimate runPoseLib(const std::vector<Point>& px1, const std::vector<Point>&
     opt.ransac.min_iterations = 0;
     opt.ransac.max_iterations = static_cast<size_t>(maxIters);
     opt.max_error = threshold;
+    // PoseLib's sampler takes a 64-bit state; 0 is its default.
+    opt.ransac.seed = static_cast<decltype(opt.ransac.seed)>(seed);
     poselib::CameraPose pose;
     std::vector<char> inliers;
     const poselib::RansacStats stats =

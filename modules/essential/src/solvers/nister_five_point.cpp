@@ -3,6 +3,9 @@
 
 #include "solvers/nister_five_point.hpp"
 
+#include "simd_dispatch.hpp"
+#include "solvers/sturm_sequence.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <utility>
@@ -45,26 +48,6 @@ void frameAbout(const double c[3], double angle, double R[3][3])
     R[1][2] = c[0] * R[0][1] - c[1] * R[0][0];
 }
 
-/** c[0] + c[1] t + ... + c[n] t^n by Horner's rule. */
-inline double evaluate(const double* c, int n, double t)
-{
-    double v = c[n];
-    for (int i = n - 1; i >= 0; --i)
-        v = v * t + c[i];
-    return v;
-}
-
-/** d(t) and d'(t) together by Horner's rule. */
-inline void evaluateWithDerivative(const double* c, int n, double t, double& f, double& df)
-{
-    f = c[n];
-    df = 0.0;
-    for (int i = n - 1; i >= 0; --i) {
-        df = df * t + f;
-        f = f * t + c[i];
-    }
-}
-
 /** out (degree na + nb) = a (degree na) * b (degree nb). */
 inline void multiply(const double* a, int na, const double* b, int nb, double* out)
 {
@@ -74,99 +57,6 @@ inline void multiply(const double* a, int na, const double* b, int nb, double* o
         for (int j = 0; j <= nb; ++j)
             out[i + j] += a[i] * b[j];
 }
-
-/** The Sturm sequence of a polynomial of degree <= 10: p0 = d, p1 = d', p(k+1) = -(p(k-1) mod
-p(k)), each scaled to max |coefficient| = 1 (a positive factor keeps the signs). The sequence
-stops early at a remainder that is zero to rounding (the last member is then gcd(d, d'), and the
-count of sign changes still counts the distinct roots). */
-class SturmSequence
-{
-public:
-    /** Builds the sequence of d (degree n >= 1, d[n] != 0). */
-    void build(const double* d, int n)
-    {
-        for (int i = 0; i <= n; ++i)
-            p_[0][i] = d[i];
-        degree_[0] = n;
-        for (int i = 1; i <= n; ++i)
-            p_[1][i - 1] = i * d[i];
-        degree_[1] = n - 1;
-        normalise(1);
-        size_ = 2;
-        while (degree_[size_ - 1] > 0) {
-            const int k = size_ - 1;
-            double r[11];
-            const int m = degree_[k - 1], nk = degree_[k];
-            for (int i = 0; i <= m; ++i)
-                r[i] = p_[k - 1][i];
-            double scale = 0.0;
-            for (int i = 0; i <= m; ++i)
-                scale = std::max(scale, std::abs(r[i]));
-            const double lead = p_[k][nk];
-            for (int i = m; i >= nk; --i) {
-                const double f = r[i] / lead;
-                for (int j = 0; j < nk; ++j)
-                    r[i - nk + j] -= f * p_[k][j];
-                r[i] = 0.0;
-            }
-            int rd = nk - 1;
-            const double zero = 1e-14 * scale;
-            while (rd >= 0 && std::abs(r[rd]) <= zero)
-                --rd;
-            if (rd < 0) break; // p(k) divides p(k-1): repeated roots
-            for (int i = 0; i <= rd; ++i)
-                p_[size_][i] = -r[i];
-            degree_[size_] = rd;
-            normalise(size_);
-            ++size_;
-        }
-    }
-
-    /** Sign changes of the sequence at t (zeros skipped). */
-    int signChanges(double t) const
-    {
-        int changes = 0;
-        bool previousNegative = false, havePrevious = false;
-        for (int k = 0; k < size_; ++k) {
-            const double v = evaluate(p_[k], degree_[k], t);
-            if (v == 0.0) continue;
-            const bool negative = v < 0.0;
-            if (havePrevious && negative != previousNegative) ++changes;
-            previousNegative = negative;
-            havePrevious = true;
-        }
-        return changes;
-    }
-
-    /** Sign changes at +infinity (`positive`) or -infinity: the signs of the leading terms. */
-    int signChangesAtInfinity(bool positive) const
-    {
-        int changes = 0;
-        for (int k = 1; k < size_; ++k) {
-            const bool a = (p_[k - 1][degree_[k - 1]] < 0.0) != (!positive && degree_[k - 1] % 2);
-            const bool b = (p_[k][degree_[k]] < 0.0) != (!positive && degree_[k] % 2);
-            changes += a != b;
-        }
-        return changes;
-    }
-
-private:
-    void normalise(int k)
-    {
-        double m = 0.0;
-        for (int i = 0; i <= degree_[k]; ++i)
-            m = std::max(m, std::abs(p_[k][i]));
-        if (m > 0.0) {
-            const double s = 1.0 / m;
-            for (int i = 0; i <= degree_[k]; ++i)
-                p_[k][i] *= s;
-        }
-    }
-
-    double p_[11][11];
-    int degree_[11];
-    int size_ = 0;
-};
 
 /** Where to split the bracket [a, b]: the middle, or the geometric mean (after clamping the inner
 end away from zero at 1/4) when the bracket spans more than a factor of four on one side of zero.
@@ -196,7 +86,7 @@ double polishRoot(const double* d, int n, double lo, double hi, int maxIteration
     double z = 0.5 * (lo + hi);
     double step = std::abs(hi - lo), stepBefore = step;
     double f, df;
-    evaluateWithDerivative(d, n, z, f, df);
+    polynomialValueAndDerivative(d, n, z, f, df);
     iterations = 0;
     while (iterations < maxIterations && f != 0.0) {
         ++iterations;
@@ -212,7 +102,7 @@ double polishRoot(const double* d, int n, double lo, double hi, int maxIteration
             z = 0.5 * (lo + hi);
         }
         if (step <= tolerance * std::max(1.0, std::abs(z))) break;
-        evaluateWithDerivative(d, n, z, f, df);
+        polynomialValueAndDerivative(d, n, z, f, df);
         if (f < 0.0)
             lo = z;
         else
@@ -271,40 +161,55 @@ bool nullSpace(const double R1[3][3], const double R2[3][3], const Point2d* x1, 
 /** The constraint matrix M of the basis A, reduced: B[r - 4] is row r = 4..9 of the Gauss-Jordan
 form of M on the last ten monomials (xz^2 ... 1); false if M's leading 10 x 10 block is singular.
 */
-bool reduceConstraints(const double A[5][4], double B[6][10])
+ESSENTIAL_AVX2_CLONES bool reduceConstraints(const double A[5][4], double B[6][10])
 {
     double M[10][20];
     nisterConstraintMatrix(A, M);
     // Only the reduced rows 4..9 (leading monomials x^2z, x^2, y^2z, y^2, xyz, xy) are used, so the
     // Gauss-Jordan reduction is done as elimination with partial pivoting followed by back
     // substitution of those six rows: the same rows as a full reduction, for two thirds the work.
+    // Rows are exchanged through pointers (the pivoting moves no entries), and every row below the
+    // pivot is updated, a zero multiplier included: subtracting 0 * M[c][j] changes no finite
+    // entry, so the result is the same as skipping it, without a branch in the loop.
+    double* rows[10];
+    for (int r = 0; r < 10; ++r)
+        rows[r] = M[r];
     double firstPivot = 0.0;
     for (int c = 0; c < 10; ++c) {
         int p = c;
         for (int r = c + 1; r < 10; ++r)
-            if (std::abs(M[r][c]) > std::abs(M[p][c])) p = r;
-        const double pivot = M[p][c];
+            if (std::abs(rows[r][c]) > std::abs(rows[p][c])) p = r;
+        std::swap(rows[p], rows[c]);
+        const double* pivotRow = rows[c];
+        const double pivot = pivotRow[c];
         if (c == 0) firstPivot = std::abs(pivot);
         if (!(std::abs(pivot) > 1e-13 * firstPivot)) return false;
-        if (p != c)
-            for (int j = c; j < 20; ++j)
-                std::swap(M[p][j], M[c][j]);
         const double inv = 1.0 / pivot;
         for (int r = c + 1; r < 10; ++r) {
-            const double f = M[r][c] * inv;
-            if (f == 0.0) continue;
-            for (int j = c + 1; j < 20; ++j)
-                M[r][j] -= f * M[c][j];
+            double* row = rows[r];
+            const double f = row[c] * inv;
+            // All 20 columns: those up to c are never read again, and a loop of fixed length
+            // runs in vector registers without a scalar head or tail.
+            for (int j = 0; j < 20; ++j)
+                row[j] -= f * pivotRow[j];
         }
     }
+    // Back substitution, a row's ten columns at once: each entry gets the same subtractions in the
+    // same order as column by column.
     for (int r = 9; r >= 4; --r) {
-        const double inv = 1.0 / M[r][r];
-        for (int j = 0; j < 10; ++j) {
-            double v = M[r][10 + j];
-            for (int k = r + 1; k < 10; ++k)
-                v -= M[r][k] * B[k - 4][j];
-            B[r - 4][j] = v * inv;
+        const double* row = rows[r];
+        const double inv = 1.0 / row[r];
+        double v[10];
+        for (int j = 0; j < 10; ++j)
+            v[j] = row[10 + j];
+        for (int k = r + 1; k < 10; ++k) {
+            const double f = row[k];
+            const double* b = B[k - 4];
+            for (int j = 0; j < 10; ++j)
+                v[j] -= f * b[j];
         }
+        for (int j = 0; j < 10; ++j)
+            B[r - 4][j] = v[j] * inv;
     }
     return true;
 }
@@ -501,8 +406,8 @@ int NisterFivePointSolver::solve(const Point2d* x1, const Point2d* x2, RNG& /*rn
         // One root: narrow the bracket on the sign of d alone (one Horner evaluation per step)
         // until it is narrow relative to the root, then polish.
         double a = br.a, b = br.b;
-        double fa = evaluate(d, degree, a);
-        const double fb = evaluate(d, degree, b);
+        double fa = polynomialValue(d, degree, a);
+        const double fb = polynomialValue(d, degree, b);
         if (fb == 0.0 || fa == 0.0 || (fa < 0.0) == (fb < 0.0)) {
             ++diagnostics_.noSignChange; // a root on the edge, or the count is off by rounding
             continue;
@@ -510,7 +415,7 @@ int NisterFivePointSolver::solve(const Point2d* x1, const Point2d* x2, RNG& /*rn
         while (b - a >
                settings_.polishBracketWidth * std::max(1.0, std::min(std::abs(a), std::abs(b)))) {
             const double m = splitPoint(a, b);
-            const double fm = evaluate(d, degree, m);
+            const double fm = polynomialValue(d, degree, m);
             ++diagnostics_.bracketEvaluations;
             if (fm == 0.0) {
                 a = b = m;
@@ -535,7 +440,7 @@ int NisterFivePointSolver::solve(const Point2d* x1, const Point2d* x2, RNG& /*rn
         double magnitude = 0.0, power = 1.0;
         for (int i = 0; i <= degree; ++i, power *= std::abs(z))
             magnitude += std::abs(d[i]) * power;
-        if (std::abs(evaluate(d, degree, z)) <= settings_.maxRelativeResidual * magnitude &&
+        if (std::abs(polynomialValue(d, degree, z)) <= settings_.maxRelativeResidual * magnitude &&
             numRoots < 10)
             roots[numRoots++] = z;
         else
@@ -552,9 +457,9 @@ int NisterFivePointSolver::solve(const Point2d* x1, const Point2d* x2, RNG& /*rn
         const double z = roots[s];
         double row[3][3];
         for (int r = 0; r < 3; ++r) {
-            row[r][0] = evaluate(w.C[r][0], 3, z);
-            row[r][1] = evaluate(w.C[r][1], 3, z);
-            row[r][2] = evaluate(w.C[r][2], 4, z);
+            row[r][0] = polynomialValue(w.C[r][0], 3, z);
+            row[r][1] = polynomialValue(w.C[r][1], 3, z);
+            row[r][2] = polynomialValue(w.C[r][2], 4, z);
         }
         double v[3] = {0, 0, 0}, vNorm2 = -1.0;
         for (int pair = 0; pair < 3; ++pair) {

@@ -70,14 +70,21 @@ struct NisterSettings
     one has max |A_ij| max |B_ij| <= acceptableCondition and no real root beyond maxAbsRoot, else
     the best one tried is used (well conditioned first, then fewest roots abandoned). */
     int frames = 3;
-    /** See `frames`. With 200, 1.69 frames are prepared per call on average (each a null space,
-    M, its reduction, d and the Sturm sequence) and 0.7% of the calls return a
-    solution whose essential residual is above 1e-6; with 100, 1.87 frames and 0.6%; with 400,
-    1.50 frames and 0.9%. Selecting on max |B_ij| alone does worse at every cost. */
-    double acceptableCondition = 200.0;
-    /** Probability that one call on an outlier-free sample returns the true E: measured 0.9978 on
-    the paper's protocol (99.95% sideways, 99.75% forward; test_nister asserts that this is not
-    above the rate it measures). The engine divides its sample count by this. */
+    /** See `frames`. The trade is frames prepared per call against roots lost to an ill-conditioned
+    frame, measured on 4000 noise-free problems of the paper's protocol (seeds 1000..4999; true E
+    within 1e-6 / 1e-4 of a solution; share of solutions with an essential residual above 1e-6):
+    200: 1.66 frames, 99.78% / 99.82%, 0.15%; 1000: 1.35, 99.80% / 99.88%, 0.26%; 3000: 1.22,
+    99.75% / 99.90%, 0.33%; 10 000: 1.15, 99.70% / 99.92%, 0.52%; no bound: 1.03, 97.30% /
+    98.85%. A frame is two thirds of a call's work, and inside a search a root within 1e-4 (a tenth
+    of a pixel at a focal length of 1000) is as good as an exact one: local optimisation and the
+    final refinement fit the model to all its inliers. 3000 keeps the 1e-6 rate at the declared
+    successRate and the inexact share well inside test_nister's bound. Selecting on max |B_ij|
+    alone does worse at every cost. */
+    double acceptableCondition = 3000.0;
+    /** Probability that one call on an outlier-free sample returns the true E: measured 0.9975 on
+    the paper's protocol (test_nister at acceptableCondition 3000: 99.95% general and sideways,
+    99.70% forward, of 2000 problems each; it asserts that this is not above the rate it measures).
+    The engine divides its sample count by this. */
     double successRate = 0.997;
 };
 

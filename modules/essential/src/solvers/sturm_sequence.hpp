@@ -1,0 +1,174 @@
+// This file is part of opencv_essential, licensed under the Apache License, Version 2.0.
+// See the LICENSE file at the top of the source tree.
+
+// Real roots of a polynomial of degree <= 10 counted on an interval: Horner's rule and the Sturm
+// sequence, for the five-point solver's d(z) (nister_five_point.cpp).
+
+#ifndef OPENCV_ESSENTIAL_SOLVERS_STURM_SEQUENCE_HPP
+#define OPENCV_ESSENTIAL_SOLVERS_STURM_SEQUENCE_HPP
+
+#include <algorithm>
+#include <cmath>
+
+namespace cv {
+namespace essential {
+namespace solvers {
+
+/** c[0] + c[1] t + ... + c[n] t^n by Horner's rule. */
+inline double polynomialValue(const double* c, int n, double t)
+{
+    double v = c[n];
+#pragma GCC unroll 10
+    for (int i = n - 1; i >= 0; --i)
+        v = v * t + c[i];
+    return v;
+}
+
+/** d(t) and d'(t) together by Horner's rule. */
+inline void polynomialValueAndDerivative(const double* c, int n, double t, double& f, double& df)
+{
+    f = c[n];
+    df = 0.0;
+#pragma GCC unroll 10
+    for (int i = n - 1; i >= 0; --i) {
+        df = df * t + f;
+        f = f * t + c[i];
+    }
+}
+
+/** The Sturm sequence of a polynomial of degree <= 10: p0 = d, p1 = d', p(k+1) = -(p(k-1) mod
+p(k)), each scaled to max |coefficient| = 1 (a positive factor keeps the signs). The sequence
+stops early at a remainder that is zero to rounding (the last member is then gcd(d, d'), and the
+count of sign changes still counts the distinct roots).
+
+The members are evaluated by the recurrence the division leaves, p(k-1) = q(k) p(k) - s(k+1)
+p(k+1) with the quotient q(k) (linear unless the degree drops by more than one) and s(k+1) the
+scale of the remainder, from the last two members up: a few operations per member instead of a
+Horner evaluation of each. Its signs agree with those of the members evaluated one by one on the
+polynomials of the solver (test_nister: SturmRecurrenceCountsLikeDirectEvaluation). */
+class SturmSequence
+{
+public:
+    /** Builds the sequence of d (degree n >= 1, d[n] != 0). */
+    void build(const double* d, int n)
+    {
+        for (int i = 0; i <= n; ++i)
+            p_[0][i] = d[i];
+        degree_[0] = n;
+        for (int i = 1; i <= n; ++i)
+            p_[1][i - 1] = i * d[i];
+        degree_[1] = n - 1;
+        normalise(1, maxAbs(p_[1], n - 1));
+        size_ = 2;
+        while (degree_[size_ - 1] > 0) {
+            const int k = size_ - 1;
+            double r[11];
+            const int m = degree_[k - 1], nk = degree_[k];
+            for (int i = 0; i <= m; ++i)
+                r[i] = p_[k - 1][i];
+            const double scale = maxAbs(r, m);
+            const double lead = p_[k][nk];
+            for (int i = m; i >= nk; --i) {
+                const double f = r[i] / lead;
+                q_[k][i - nk] = f;
+                for (int j = 0; j < nk; ++j)
+                    r[i - nk + j] -= f * p_[k][j];
+                r[i] = 0.0;
+            }
+            qDegree_[k] = m - nk;
+            int rd = nk - 1;
+            const double zero = 1e-14 * scale;
+            while (rd >= 0 && std::abs(r[rd]) <= zero)
+                --rd;
+            if (rd < 0) break; // p(k) divides p(k-1): repeated roots
+            for (int i = 0; i <= rd; ++i)
+                p_[size_][i] = -r[i];
+            degree_[size_] = rd;
+            // p(k+1) = -r / s(k+1), so r = -s(k+1) p(k+1)
+            s_[size_] = maxAbs(r, rd);
+            normalise(size_, s_[size_]);
+            ++size_;
+        }
+    }
+
+    /** Sign changes of the sequence at t (zeros skipped). */
+    int signChanges(double t) const
+    {
+        double v[11];
+        const int last = size_ - 1;
+        v[last] = polynomialValue(p_[last], degree_[last], t);
+        v[last - 1] = polynomialValue(p_[last - 1], degree_[last - 1], t);
+        for (int k = last - 1; k >= 1; --k) {
+            const double q =
+                qDegree_[k] == 1 ? q_[k][0] + q_[k][1] * t : polynomialValue(q_[k], qDegree_[k], t);
+            v[k - 1] = q * v[k] - s_[k + 1] * v[k + 1];
+        }
+        return countSignChanges(v, size_);
+    }
+
+    /** The same by evaluating every member on its own (for tests of the recurrence). */
+    int signChangesDirect(double t) const
+    {
+        double v[11];
+        for (int k = 0; k < size_; ++k)
+            v[k] = polynomialValue(p_[k], degree_[k], t);
+        return countSignChanges(v, size_);
+    }
+
+    /** Sign changes at +infinity (`positive`) or -infinity: the signs of the leading terms. */
+    int signChangesAtInfinity(bool positive) const
+    {
+        int changes = 0;
+        for (int k = 1; k < size_; ++k) {
+            const bool a = (p_[k - 1][degree_[k - 1]] < 0.0) != (!positive && degree_[k - 1] % 2);
+            const bool b = (p_[k][degree_[k]] < 0.0) != (!positive && degree_[k] % 2);
+            changes += a != b;
+        }
+        return changes;
+    }
+
+private:
+    /** Sign changes along v[0..n), zeros skipped (Sturm's theorem counts them so). */
+    static int countSignChanges(const double* v, int n)
+    {
+        int changes = 0;
+        bool previousNegative = false, havePrevious = false;
+        for (int k = 0; k < n; ++k) {
+            if (v[k] == 0.0) continue;
+            const bool negative = v[k] < 0.0;
+            if (havePrevious && negative != previousNegative) ++changes;
+            previousNegative = negative;
+            havePrevious = true;
+        }
+        return changes;
+    }
+
+    static double maxAbs(const double* c, int n)
+    {
+        double m = 0.0;
+        for (int i = 0; i <= n; ++i)
+            m = std::max(m, std::abs(c[i]));
+        return m;
+    }
+    void normalise(int k, double m)
+    {
+        if (m > 0.0) {
+            const double s = 1.0 / m;
+            for (int i = 0; i <= degree_[k]; ++i)
+                p_[k][i] *= s;
+        }
+    }
+
+    double p_[11][11];
+    double q_[11][11]; //!< q_[k]: the quotient of p(k-1) by p(k)
+    double s_[11];     //!< s_[k]: the scale of the remainder that became p(k), k >= 2
+    int degree_[11];
+    int qDegree_[11];
+    int size_ = 0;
+};
+
+} // namespace solvers
+} // namespace essential
+} // namespace cv
+
+#endif

@@ -11,6 +11,7 @@
 #include "scoring/scorer.hpp"
 #include "scoring/sprt.hpp"
 #include "search/search.hpp"
+#include "termination/basin_confirmation.hpp"
 #include "termination/termination.hpp"
 
 #include <cmath>
@@ -35,12 +36,13 @@ a wrong epipolar line with probability about 2 t / (image size), 0.002 to 0.005 
 threshold; starting higher only makes the first tests more lenient. */
 constexpr double kSprtInitialDelta = 0.01;
 
-/** The confidence the stopping rule asks for in the extended budget (SearchSettings::minSampleCap):
-1 - 1/e, one expected good sample at the best model's inlier ratio. Measured on the synthetic
-protocol at N = 500 (perf suite): with the full confidence of 0.999 there, the extension made 30%
-inliers 4.4 and 25% about 10 times slower (docs/TUNING.md, "Extended confidence") for a reliability
-of 0.993 / 0.983 -> 1.000, where the hard sets (docs/HARD_PAIRS.md) need the extension only when the
-best ratio is far lower. */
+/** The confidence the stopping rule asks for in the extended budget (SearchSettings::minSampleCap)
+once the best model's basin is confirmed (termination::BasinConfirmation; before, it asks that
+class's kUnconfirmedConfidence): 1 - 1/e, one expected good sample at the best model's inlier ratio.
+Measured on the synthetic protocol at N = 500 (perf suite): with the full confidence of 0.999 there,
+the extension made 30% inliers 4.4 and 25% about 10 times slower (docs/TUNING.md, "Extended
+confidence") for a reliability of 0.993 / 0.983 -> 1.000, where the hard sets (docs/HARD_PAIRS.md)
+need the extension only when the best ratio is far lower. */
 constexpr double kExtendedConfidence = 0.6321205588285577;
 
 } // namespace
@@ -146,7 +148,10 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
     // Past the confidence cap (the extended budget of settings.minSampleCap) the rule asks only for
     // kExtendedConfidence: the extension is there for data whose best model so far is so weakly
     // supported that the cap does not even buy one expected good sample at its inlier ratio (a
-    // wrong model on hard data, or none), not for raising 0.9 to 0.999 at a moderate ratio.
+    // wrong model on hard data, or none), not for raising 0.9 to 0.999 at a moderate ratio. Until
+    // the best model's basin has been drawn again (`basin`), it asks more: a model seen once on
+    // such data is as likely a wrong one.
+    termination::BasinConfirmation basin;
     auto stopRule = [&](double inlierRatio) {
         const double p = solver.hitProbabilityAt(inlierRatio, best.E);
         auto rule = [&](double confidence) {
@@ -157,8 +162,8 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
         const int modelCap = confidenceCapAtBest();
         if (settings.minSampleCap <= modelCap || need <= modelCap) return need;
         if (!extensionCanPay(modelCap)) return modelCap;
-        return std::max(modelCap,
-                        std::min(need, rule(std::min(settings.confidence, kExtendedConfidence))));
+        return std::max(modelCap, std::min(need, rule(basin.extendedConfidence(
+                                                     kExtendedConfidence, settings.confidence))));
     };
     auto samplesNeeded = [&]() {
         cap = limited(std::max(confidenceCapAtBest(), settings.minSampleCap));
@@ -232,7 +237,15 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
             }
             if (lo.enabled() && s.cost < bound && s.inliers >= buffer.sampleSize)
                 pool.offer(buffer.solutions[h], s.cost);
+            // Scored exactly (below the bound): a draw of the best model's basin or not.
+            bool sameBasin = false;
+            if (result.found && s.cost < bound) {
+                const bool wasConfirmed = basin.confirmed();
+                sameBasin = basin.offer(buffer.solutions[h], best.E);
+                if (!wasConfirmed && basin.confirmed()) needed = samplesNeeded();
+            }
             if (s.cost < best.score.cost && s.inliers >= buffer.sampleSize) {
+                if (!sameBasin) basin.newBasin();
                 best.score = s;
                 best.E = buffer.solutions[h];
                 result.found = true;

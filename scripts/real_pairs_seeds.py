@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 # Summarises runs of essential_real_pairs over several seeds (one --csv per seed): for each group
 # (all pairs of a set, then its true-inlier-ratio buckets) and method, the mean over the seeds of
-# AUC@5/10/20, the right-rate, the no-pose count and the mean CPU time, with each figure's range
-# over the seeds. One seed moves the search's failures (docs/REAL_PAIRS.md), so a comparison of
+# AUC@5/10/20, the right-rate, the no-pose count and the median and mean CPU time, with each
+# figure's range over the seeds. One seed moves the search's failures (docs/REAL_PAIRS.md), so a comparison of
 # two randomised methods that differ by less than that range says nothing; this table shows it.
 #
 #   scripts/real_pairs_seeds.py [--set real] [--md FILE] RUN.csv [RUN.csv ...]
@@ -57,6 +57,7 @@ def summary(rows):
         "AUC@20": pose_auc(err, 20),
         "right": right / n,
         "no pose": nopose,
+        "median ms": statistics.median(ms),
         "mean ms": sum(ms) / n,
     }
 
@@ -88,13 +89,15 @@ def main():
                 groups.setdefault(g, {}).setdefault(m, []).append((len(rows), summary(rows)))
                 if m not in order:
                     order.append(m)
-    keys = ["AUC@5", "AUC@10", "AUC@20", "right", "no pose", "mean ms"]
+    keys = ["AUC@5", "AUC@10", "AUC@20", "right", "no pose", "median ms", "mean ms"]
     out = []
     bucket_order = ["all pairs", "< 15%", "15-30%", "30-50%", ">= 50%"]
     for g in sorted(groups, key=lambda g: [b in g for b in bucket_order].index(True)):
         sizes = {n for m in groups[g].values() for n, _ in m}
-        out.append("*%s (%s pairs), mean over %d runs [min, max]*\n" %
-                   (g, "/".join(str(s) for s in sorted(sizes)), len(a.runs)))
+        runs_per_method = sorted({len(m) for m in groups[g].values()})
+        out.append("*%s (%s pairs), mean over %s runs per method [min, max]*\n" %
+                   (g, "/".join(str(s) for s in sorted(sizes)),
+                    "/".join(str(r) for r in runs_per_method)))
         out.append("| method | " + " | ".join(keys) + " |")
         out.append("|---|" + "---:|" * len(keys))
         for m in order:
@@ -104,7 +107,7 @@ def main():
             cells = []
             for k in keys:
                 v = [s[k] for _, s in runs]
-                fmt = "%.1f" if k in ("no pose", "mean ms") else "%.3f"
+                fmt = "%.1f" if k in ("no pose", "median ms", "mean ms") else "%.3f"
                 mean = statistics.fmean(v)
                 cells.append((fmt % mean) + (" [" + fmt % min(v) + ", " + fmt % max(v) + "]"
                                              if len(v) > 1 else ""))

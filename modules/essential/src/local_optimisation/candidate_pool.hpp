@@ -11,6 +11,8 @@
 #ifndef OPENCV_ESSENTIAL_LOCAL_OPTIMISATION_CANDIDATE_POOL_HPP
 #define OPENCV_ESSENTIAL_LOCAL_OPTIMISATION_CANDIDATE_POOL_HPP
 
+#include "geometry/same_model.hpp"
+
 #include <opencv2/core.hpp>
 
 #include <array>
@@ -29,7 +31,7 @@ public:
 
     /** Matrices nearer than this (Frobenius, both scaled to unit norm, up to sign) count as one
     model; the pool keeps the cheaper. */
-    static constexpr double kSameModel = 0.1;
+    static constexpr double kSameModel = geometry::kSameModelDistance;
     /** Runners-up costing more than this many times the best model are not kept: a model of the
     true basin drawn from a noisy sample costs up to about 1.5 times the polished wrong one on the
     real pairs where the pool matters. */
@@ -48,7 +50,7 @@ public:
     void offer(const Matx33d& E, double cost)
     {
         if (!(cost < entryCost()) && count_ == kSize) return;
-        const Matx33d unit = E * (1.0 / std::sqrt(E.dot(E)));
+        const Matx33d unit = geometry::unitNorm(E);
         for (int i = 0; i < count_; ++i)
             if (same(unit, entries_[i].E)) {
                 if (cost < entries_[i].cost) {
@@ -70,8 +72,7 @@ public:
     /** Whether E is the model of one of the entries (kSameModel). */
     static bool same(const Matx33d& unitA, const Matx33d& unitB)
     {
-        const double minus = norm(unitA - unitB), plus = norm(unitA + unitB);
-        return std::min(minus, plus) < kSameModel;
+        return geometry::sameUnitModel(unitA, unitB);
     }
 
 private:

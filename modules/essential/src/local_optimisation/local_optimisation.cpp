@@ -3,6 +3,7 @@
 
 #include "local_optimisation/local_optimisation.hpp"
 
+#include "geometry/same_model.hpp"
 #include "refine/irls_refinement.hpp"
 #include "sampling/uniform_sampler.hpp"
 #include "termination/termination.hpp"
@@ -70,7 +71,7 @@ bool LocalOptimisation::improveBest(int samplesDrawn, RNG& rng, BestModel& best,
 void LocalOptimisation::polishRunnersUp(const CandidatePool& pool, RNG& rng, BestModel& best,
                                         LocalOptimisationCounters& counters)
 {
-    const Matx33d winner = best.E * (1.0 / std::sqrt(best.E.dot(best.E)));
+    const Matx33d winner = geometry::unitNorm(best.E);
     for (int i = 0; i < pool.size(); ++i) {
         if (CandidatePool::same(pool[i].E, winner) ||
             !(pool[i].cost < CandidatePool::kCostFactor * best.score.cost))

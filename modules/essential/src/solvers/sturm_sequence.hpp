@@ -45,7 +45,8 @@ The members are evaluated by the recurrence the division leaves, p(k-1) = q(k) p
 p(k+1) with the quotient q(k) (linear unless the degree drops by more than one) and s(k+1) the
 scale of the remainder, from the last two members up: a few operations per member instead of a
 Horner evaluation of each. Its signs agree with those of the members evaluated one by one on the
-polynomials of the solver (test_nister: SturmRecurrenceCountsLikeDirectEvaluation). */
+polynomials of the solver (test_sturm_sequence:
+RecurrenceCountsLikeDirectEvaluationOnTheSolversPolynomials). */
 class SturmSequence
 {
 public:

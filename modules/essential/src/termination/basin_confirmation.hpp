@@ -4,39 +4,39 @@
 #ifndef OPENCV_ESSENTIAL_TERMINATION_BASIN_CONFIRMATION_HPP
 #define OPENCV_ESSENTIAL_TERMINATION_BASIN_CONFIRMATION_HPP
 
+#include "geometry/same_model.hpp"
+
 #include <opencv2/core/matx.hpp>
 
 #include <algorithm>
-#include <cmath>
 
 namespace cv {
 namespace essential {
 namespace termination {
 
 /** Whether the search has drawn the best model's basin more than once: the count of scored
-hypotheses, after the one that founded the basin, that lie within kSameBasin of the best model.
+hypotheses, after the one that founded the basin, that are the best model by sameBasin().
 
 The extended budget (SearchSettings::minSampleCap) stops at a low confidence (1 - 1/e) because on
 easy data a moderate inlier ratio is already right; but a best model seen only once may be a wrong
 model that fits repeated structure, or a right one with a poor fit, and one more expected good
 sample at its ratio does not tell these apart. Until the basin has been drawn kRefinds more times
-the extension asks kUnconfirmedConfidence instead. Measured (docs/REAL_PAIRS.md, "Confirming the
-best model's basin"; SIFT real pairs, four seeds, the same match cache): 15-30% true inliers
-AUC@10 0.504 -> 0.524 (refinds 1: 0.517; a confidence of 0.99 for every extension, confirmed or
-not: 0.524 at 1.65 times the time), all pairs 0.814 -> 0.816, mean time 4.4 -> 4.8 ms; the paper's
-synthetic protocol at N = 500 (essential_compare_opencv --problems 100), median time 3.97 -> 4.74 ms
-at 30% inliers and 5.33 -> 6.68 ms at 25% (1.00 reliable either way), the same at 50%. */
+the extension asks kUnconfirmedConfidence instead. Measured (docs/REAL_PAIRS.md, "Four seeds, a
+cheaper nister and basin confirmation"; SIFT real pairs, four seeds, the same match cache): 15-30%
+true inliers AUC@10 0.504 -> 0.524 (refinds 1: 0.517; a confidence of 0.99 for every extension,
+confirmed or not: 0.524 at 1.65 times the time), all pairs 0.814 -> 0.816, mean time 4.4 -> 4.8 ms;
+the paper's synthetic protocol at N = 500 (essential_compare_opencv --problems 100), median
+time 3.97 -> 4.74 ms at 30% inliers and 5.33 -> 6.68 ms at 25% (1.00 reliable either way), the same
+at 50%. */
 class BasinConfirmation
 {
 public:
     /** Re-finds after the founding hypothesis: 2 (three draws of the basin in all) gained the
-    most on the real pairs; 1 gave two thirds of it for a third of the time. */
+    most on the real pairs; 1 gave two thirds of the gain for half the extra time there (4.6 against
+    4.8 ms a pair, 4.4 without) and a third of the extra time on the synthetic protocol. */
     static constexpr int kRefinds = 2;
     /** The extended budget's confidence while the basin is unconfirmed. */
     static constexpr double kUnconfirmedConfidence = 0.99;
-    /** Matrices nearer than this (Frobenius, both scaled to unit norm, up to sign) are one basin,
-    as for local_optimisation::CandidatePool::kSameModel. */
-    static constexpr double kSameBasin = 0.1;
 
     /** A new best model in another basin: the count starts again. */
     void newBasin() { refinds_ = 0; }
@@ -60,17 +60,10 @@ public:
         return std::min(cap, confirmed() ? confirmedConfidence : kUnconfirmedConfidence);
     }
 
+    /** One basin: geometry::sameUnitModel of the unit-norm matrices (the pool's test). */
     static bool sameBasin(const Matx33d& a, const Matx33d& b)
     {
-        const double na = std::sqrt(a.dot(a)), nb = std::sqrt(b.dot(b));
-        if (!(na > 0) || !(nb > 0)) return false;
-        double minus = 0.0, plus = 0.0;
-        for (int i = 0; i < 9; ++i) {
-            const double x = a.val[i] / na, y = b.val[i] / nb;
-            minus += (x - y) * (x - y);
-            plus += (x + y) * (x + y);
-        }
-        return std::min(minus, plus) < kSameBasin * kSameBasin;
+        return geometry::sameUnitModel(geometry::unitNorm(a), geometry::unitNorm(b));
     }
 
 private:

@@ -183,6 +183,9 @@ void runOne(FuzzInput& in)
         const cv::Mat E = anyEssential(in);
         cv::Mat R, t;
         int inFront = 0;
+        // The points' count as recoverPose reads them: a view that is not continuous is accepted
+        // (converted to double first, as OpenCV does), so the count must not require continuity.
+        const int n = p1.checkVector(2, -1, /*requireContinuous*/ false);
         if (api == 7) {
             inFront = ess::recoverPoseIter(E, p1, p2, camera(in), R, t, mask);
         } else if (api == 8) {
@@ -193,9 +196,9 @@ void runOne(FuzzInput& in)
             cv::Mat X;
             const double d = in.pick(2) ? in.anyDouble() : 50.0;
             inFront = ess::recoverPoseIter(E, p1, p2, camera(in), R, t, d, mask, X);
-            checkTriangulated(X, p1.checkVector(2), inFront, t);
+            checkTriangulated(X, n, inFront, t);
         }
-        checkPose(inFront, R, t, p1.checkVector(2));
+        checkPose(inFront, R, t, n);
         break;
     }
     case 10: {

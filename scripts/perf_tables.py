@@ -50,12 +50,17 @@ def auc(entries):
 
 
 def estimate_rows(runs):
-    table = defaultdict(dict)  # (n, ratio) -> method -> entries
+    table = defaultdict(dict)  # (n, ratio, camera) -> method -> entries
     for name, entries in runs.items():
-        m = re.match(r"Estimate/([^/]+)/N:(\d+)/inliers:(\d+)$", name)
+        m = re.match(r"Estimate/([^/]+)/N:(\d+)/inliers:(\d+)(?:/camera:(\w+))?$", name)
         if m:
-            table[(int(m.group(2)), int(m.group(3)))][m.group(1)] = entries
+            table[(int(m.group(2)), int(m.group(3)), m.group(4) or "paper")][m.group(1)] = entries
     return table
+
+
+def size_label(n, camera):
+    """The N column: the size, and the camera when it is not the paper's."""
+    return f"{n}" if camera == "paper" else f"{n}, {camera} camera"
 
 
 def targets_table(table):
@@ -64,14 +69,15 @@ def targets_table(table):
                "| median wall ms | CPU time / ours | target |")
     out.append("|---|---|---|---|---|---|---|---|---|")
     summary = []
-    for (n, ratio) in sorted(table, key=lambda k: (k[0], -k[1])):
-        methods = table[(n, ratio)]
+    for (n, ratio, camera) in sorted(table, key=lambda k: (k[2] != "paper", k[0], -k[1])):
+        methods = table[(n, ratio, camera)]
+        size = size_label(n, camera)
         if "essential" not in methods:
             continue
         ours = methods["essential"]
         ours_cpu = med(ours, "median_cpu_ms")
         ours_rel = mean(ours, "reliable")
-        out.append(f"| {n} | {ratio}% | **essential** (drop-in) | {ours_rel:.3f} | {auc(ours)} "
+        out.append(f"| {size} | {ratio}% | **essential** (drop-in) | {ours_rel:.3f} | {auc(ours)} "
                    f"| {ours_cpu:.3f} | {med(ours, 'median_ms'):.3f} | 1.0x | |")
         for base in BASELINES:
             if base not in methods:
@@ -81,18 +87,24 @@ def targets_table(table):
             rel = mean(e, "reliable")
             ratio_x = cpu / ours_cpu if ours_cpu > 0 else float("nan")
             target = ""
+            # The targets of issue 27: 50x less CPU than RANSAC and 15x less than USAC_MAGSAC at
+            # 50-90% inliers (either camera), 5x less than USAC_MAGSAC at 30% (N = 500, the
+            # paper's camera); faster than USAC_ACCURATE at 30% and below.
             if ratio >= 50 and base == "cv_RANSAC":
-                ok = ratio_x >= 20 and ours_rel >= rel
-                target = f"{'met' if ok else 'NOT met'}: >= 20x, reliability {ours_rel:.3f} >= {rel:.3f}"
+                ok = ratio_x >= 50 and ours_rel >= rel
+                target = f"{'met' if ok else 'NOT met'}: >= 50x, reliability {ours_rel:.3f} >= {rel:.3f}"
             elif ratio >= 50 and base == "cv_USAC_MAGSAC":
+                ok = ratio_x >= 15 and ours_rel >= rel
+                target = f"{'met' if ok else 'NOT met'}: >= 15x, reliability {ours_rel:.3f} >= {rel:.3f}"
+            elif ratio == 30 and n == 500 and camera == "paper" and base == "cv_USAC_MAGSAC":
                 ok = ratio_x >= 5 and ours_rel >= rel
                 target = f"{'met' if ok else 'NOT met'}: >= 5x, reliability {ours_rel:.3f} >= {rel:.3f}"
             elif ratio <= 30 and base == "cv_USAC_ACCURATE":
                 ok = ratio_x > 1 and ours_rel >= rel
                 target = f"{'met' if ok else 'NOT met'}: faster, reliability {ours_rel:.3f} >= {rel:.3f}"
             if target:
-                summary.append((n, ratio, base, ratio_x, ours_rel, rel, target.split(":")[0]))
-            out.append(f"| {n} | {ratio}% | {base} | {rel:.3f} | {auc(e)} | {cpu:.3f} "
+                summary.append((size, ratio, base, ratio_x, ours_rel, rel, target.split(":")[0]))
+            out.append(f"| {size} | {ratio}% | {base} | {rel:.3f} | {auc(e)} | {cpu:.3f} "
                        f"| {med(e, 'median_ms'):.3f} | {ratio_x:.1f}x | {target} |")
     return out, summary
 
@@ -100,12 +112,12 @@ def targets_table(table):
 def variants_table(table):
     out = ["| N | inliers | solver | engine | reliable (2/5 deg) | median CPU ms | median wall ms |",
            "|---|---|---|---|---|---|---|"]
-    for (n, ratio) in sorted(table, key=lambda k: (k[0], -k[1])):
-        for method, e in sorted(table[(n, ratio)].items()):
+    for (n, ratio, camera) in sorted(table, key=lambda k: (k[2] != "paper", k[0], -k[1])):
+        for method, e in sorted(table[(n, ratio, camera)].items()):
             if not method.startswith("essential:"):
                 continue
             _, solver, engine = method.split(":")
-            out.append(f"| {n} | {ratio}% | {solver} | {engine} | {mean(e, 'reliable'):.3f} "
+            out.append(f"| {size_label(n, camera)} | {ratio}% | {solver} | {engine} | {mean(e, 'reliable'):.3f} "
                        f"| {med(e, 'median_cpu_ms'):.3f} | {med(e, 'median_ms'):.3f} |")
     return out if len(out) > 2 else []
 

@@ -8,6 +8,7 @@
 #include "simd_dispatch.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace cv {
 namespace essential {
@@ -120,6 +121,26 @@ ESSENTIAL_AVX2_CLONES void squaredDistances(const Matx33d& E, const Problem& pro
                                             InlierTest test, double* errors)
 {
     distanceBlock(E, problem, test.distance, 0, problem.size(), errors);
+}
+
+ESSENTIAL_AVX2_CLONES void distanceBands(const Matx33d& E, const Problem& problem, InlierTest test,
+                                         int bands, int* counts)
+{
+    for (int k = 0; k < bands; ++k)
+        counts[k] = 0;
+    const int n = problem.size();
+    const double inverse = 1.0 / test.threshold;
+    double err[kBlock];
+    for (int begin = 0; begin < n; begin += kBlock) {
+        const int end = std::min(n, begin + kBlock);
+        distanceBlock(E, problem, test.distance, begin, end, err);
+        for (int i = 0; i < end - begin; ++i) {
+            // A distance of exactly k thresholds belongs to band k - 1, as an inlier (<= t) to 0.
+            const double d = std::sqrt(err[i]) * inverse;
+            const double band = std::ceil(d) - 1.0;
+            if (band < bands) ++counts[band < 0.0 ? 0 : static_cast<int>(band)];
+        }
+    }
 }
 
 ESSENTIAL_AVX2_CLONES int inlierMask(const Matx33d& E, const Problem& problem, InlierTest test,

@@ -48,6 +48,12 @@ void sampsonErrors(const Matx33d& E, const Problem& problem, double* errors);
 /** Squared distance (test.distance) of every point to E. */
 void squaredDistances(const Matx33d& E, const Problem& problem, InlierTest test, double* errors);
 
+/** The distances of all points to E in bands one threshold wide: counts[k] is the number of points
+with k t < distance <= (k + 1) t (band 0 holds the inliers, distance 0 included), for k < `bands`;
+farther points are not counted. For termination::NoiseAdaptedRatio. */
+void distanceBands(const Matx33d& E, const Problem& problem, InlierTest test, int bands,
+                   int* counts);
+
 /** Writes mask[i] = 1 for the inliers of E under `test`, 0 otherwise; returns their number. */
 int inlierMask(const Matx33d& E, const Problem& problem, InlierTest test, uchar* mask);
 

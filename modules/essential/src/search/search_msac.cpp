@@ -12,6 +12,7 @@
 #include "scoring/sprt.hpp"
 #include "search/search.hpp"
 #include "termination/basin_confirmation.hpp"
+#include "termination/noise_adapted_ratio.hpp"
 #include "termination/termination.hpp"
 
 #include <cmath>
@@ -44,6 +45,17 @@ the extension made 30% inliers 4.4 and 25% about 10 times slower (docs/TUNING.md
 confidence") for a reliability of 0.993 / 0.983 -> 1.000, where the hard sets (docs/HARD_PAIRS.md)
 need the extension only when the best ratio is far lower. */
 constexpr double kExtendedConfidence = 0.6321205588285577;
+
+/** Every k-th point of `problem`, k the least step that leaves at most `count` of them. */
+Problem stridedSubset(const Problem& problem, int count)
+{
+    const int n = problem.size();
+    const int step = (n + count - 1) / count;
+    std::vector<int> indices;
+    for (int i = 0; i < n; i += step)
+        indices.push_back(i);
+    return subsetProblem(problem, indices.data(), static_cast<int>(indices.size()));
+}
 
 } // namespace
 
@@ -152,22 +164,56 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
     // the best model's basin has been drawn again (`basin`), it asks more: a model seen once on
     // such data is as likely a wrong one.
     termination::BasinConfirmation basin;
-    auto stopRule = [&](double inlierRatio) {
-        const double p = solver.hitProbabilityAt(inlierRatio, best.E);
-        auto rule = [&](double confidence) {
+    // The best model's noise-adapted inlier ratio (termination::NoiseAdaptedRatio), computed only
+    // when the stopping rule would extend the budget, once per best model, on at most
+    // NoiseAdaptedRatio::kMaxPoints of the points (every k-th, copied on first use).
+    Problem bandSubset;
+    Matx33d adaptedFor = Matx33d::zeros();
+    double adaptedRatio = 0.0;
+    auto noiseAdaptedRatio = [&]() {
+        if (best.E == adaptedFor) return adaptedRatio;
+        const Problem* points = &problem;
+        if (n > termination::NoiseAdaptedRatio::kMaxPoints) {
+            if (bandSubset.size() == 0)
+                bandSubset = stridedSubset(problem, termination::NoiseAdaptedRatio::kMaxPoints);
+            points = &bandSubset;
+        }
+        int bands[termination::NoiseAdaptedRatio::kBands];
+        scoring::distanceBands(best.E, *points, settings.test,
+                               termination::NoiseAdaptedRatio::kBands, bands);
+        adaptedRatio = termination::NoiseAdaptedRatio::ratio(bands, points->size(),
+                                                             double(best.score.inliers) / n);
+        adaptedFor = best.E;
+        return adaptedRatio;
+    };
+    // `wholeSet`: the ratio is the best model's on all points (not one of PROSAC's lengths).
+    auto stopRule = [&](double inlierRatio, bool wholeSet) {
+        auto rule = [&](double ratio, double confidence) {
+            const double p = solver.hitProbabilityAt(ratio, best.E);
             return settings.sprt ? sprt.samplesNeeded(p, confidence, cap)
                                  : termination::requiredIterations(confidence, p, cap);
         };
-        const int need = rule(settings.confidence);
+        const int need = rule(inlierRatio, settings.confidence);
         const int modelCap = confidenceCapAtBest();
         if (settings.minSampleCap <= modelCap || need <= modelCap) return need;
+        // The rule would extend the budget: first ask whether the ratio is low only because the
+        // threshold lies below the noise, where the correct matches' ratio is the one to sample
+        // for. Only this stop reads that ratio: a model whose correct matches are off by its own
+        // error spreads them over the bands too, and the extension below, for data whose best
+        // model is weak, keeps the ratio the threshold sees.
+        if (wholeSet && settings.noiseAdaptedStop) {
+            const int adaptedNeed = rule(noiseAdaptedRatio(), settings.confidence);
+            if (adaptedNeed <= modelCap) return adaptedNeed;
+        }
         if (!extensionCanPay(modelCap)) return modelCap;
-        return std::max(modelCap, std::min(need, rule(basin.extendedConfidence(
-                                                     kExtendedConfidence, settings.confidence))));
+        return std::max(
+            modelCap,
+            std::min(need, rule(inlierRatio, basin.extendedConfidence(kExtendedConfidence,
+                                                                      settings.confidence))));
     };
     auto samplesNeeded = [&]() {
         cap = limited(std::max(confidenceCapAtBest(), settings.minSampleCap));
-        int need = stopRule(double(best.score.inliers) / n);
+        int need = stopRule(double(best.score.inliers) / n, true);
         if (!prosac || prosac->isUniform()) return need;
         scoring::inlierMask(best.E, problem, settings.test, mask.data());
         const int from = std::max(prosac->poolSize(), prosacStop->minLength());
@@ -176,7 +222,7 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
             inliers += mask[k];
             const int len = k + 1;
             if (len < from || !mask[k] || inliers < prosacStop->minInliers(len)) continue;
-            const int k_n = stopRule(double(inliers) / len);
+            const int k_n = stopRule(double(inliers) / len, len == n);
             if (k_n < need) {
                 need = k_n;
                 length = len;

@@ -204,11 +204,13 @@ void registerAll()
             registerEstimate(m.first, m.second, 500, ratio, /*wide=*/true);
 
     // Solver x engine, the module's own overload (not part of the targets table).
-    const std::vector<std::string> solvers = {"gn", "nister", "gn+nister"};
+    // Every built-in minimal solver and the mix, at every inlier ratio of the targets: the table
+    // the default solver is chosen from (docs/SOLVERS.md, "The default").
+    const std::vector<std::string> solvers = {"gn", "lm", "nister", "gn+nister"};
     const std::vector<std::pair<std::string, cv::essential::EssentialEngine>> engines = {
         {"adaptive", cv::essential::ENGINE_ADAPTIVE},
         {"preemptive", cv::essential::ENGINE_PREEMPTIVE}};
-    for (int ratio : {50, 30})
+    for (int ratio : {90, 70, 50, 30})
         for (const auto& solver : solvers)
             for (const auto& engine : engines)
                 registerEstimate("essential:" + solver + ":" + engine.first,

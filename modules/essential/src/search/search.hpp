@@ -54,7 +54,8 @@ struct SearchSettings
     int minSampleCap = 0;
     /** Adaptive MSAC: before the stopping rule extends the budget past the confidence cap, it reads
     the best model's inlier ratio as termination::NoiseAdaptedRatio does (the correct matches' ratio
-    when the threshold lies below the noise) and stops at the cap when that ratio is met. */
+    when the threshold lies below the noise) and stops at the cap when that ratio is met; in the
+    extension it reads it so once the best model's basin is confirmed. */
     bool noiseAdaptedStop = true;
     /** Adaptive MSAC, LMedS and preemptive: keep only the solutions of a minimal (5-point) sample
     under one of whose poses the sample lies in front of both cameras

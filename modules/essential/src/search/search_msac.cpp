@@ -198,18 +198,22 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
         if (settings.minSampleCap <= modelCap || need <= modelCap) return need;
         // The rule would extend the budget: first ask whether the ratio is low only because the
         // threshold lies below the noise, where the correct matches' ratio is the one to sample
-        // for. Only this stop reads that ratio: a model whose correct matches are off by its own
-        // error spreads them over the bands too, and the extension below, for data whose best
-        // model is weak, keeps the ratio the threshold sees.
+        // for.
         if (wholeSet && settings.noiseAdaptedStop) {
             const int adaptedNeed = rule(noiseAdaptedRatio(), settings.confidence);
             if (adaptedNeed <= modelCap) return adaptedNeed;
         }
         if (!extensionCanPay(modelCap)) return modelCap;
+        // The extension reads that ratio too, but only once the best model's basin is confirmed:
+        // a model off by its own error spreads its correct matches over the bands as noise does,
+        // and a model drawn once may be such a one (docs/TUNING.md, "Noise-adapted stop").
+        const double extensionRatio = wholeSet && settings.noiseAdaptedStop && basin.confirmed()
+                                          ? std::max(inlierRatio, noiseAdaptedRatio())
+                                          : inlierRatio;
         return std::max(
             modelCap,
-            std::min(need, rule(inlierRatio, basin.extendedConfidence(kExtendedConfidence,
-                                                                      settings.confidence))));
+            std::min(need, rule(extensionRatio, basin.extendedConfidence(kExtendedConfidence,
+                                                                         settings.confidence))));
     };
     auto samplesNeeded = [&]() {
         cap = limited(std::max(confidenceCapAtBest(), settings.minSampleCap));

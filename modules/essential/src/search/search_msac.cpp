@@ -197,19 +197,19 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
         const int modelCap = confidenceCapAtBest();
         if (settings.minSampleCap <= modelCap || need <= modelCap) return need;
         // The rule would extend the budget: first ask whether the ratio is low only because the
-        // threshold lies below the noise, where the correct matches' ratio is the one to sample
-        // for.
-        if (wholeSet && settings.noiseAdaptedStop) {
-            const int adaptedNeed = rule(noiseAdaptedRatio(), settings.confidence);
+        // threshold lies below the noise, where the correct matches' ratio (at least the apparent
+        // one) is the one to sample for.
+        const double adapted =
+            wholeSet && settings.noiseAdaptedStop ? noiseAdaptedRatio() : inlierRatio;
+        if (adapted > inlierRatio) {
+            const int adaptedNeed = rule(adapted, settings.confidence);
             if (adaptedNeed <= modelCap) return adaptedNeed;
         }
         if (!extensionCanPay(modelCap)) return modelCap;
         // The extension reads that ratio too, but only once the best model's basin is confirmed:
         // a model off by its own error spreads its correct matches over the bands as noise does,
         // and a model drawn once may be such a one (docs/TUNING.md, "Noise-adapted stop").
-        const double extensionRatio = wholeSet && settings.noiseAdaptedStop && basin.confirmed()
-                                          ? std::max(inlierRatio, noiseAdaptedRatio())
-                                          : inlierRatio;
+        const double extensionRatio = basin.confirmed() ? adapted : inlierRatio;
         return std::max(
             modelCap,
             std::min(need, rule(extensionRatio, basin.extendedConfidence(kExtendedConfidence,
@@ -226,7 +226,8 @@ SearchResult searchMsac(const Problem& problem, EssentialSolver& solver, RNG& rn
             inliers += mask[k];
             const int len = k + 1;
             if (len < from || !mask[k] || inliers < prosacStop->minInliers(len)) continue;
-            const int k_n = stopRule(double(inliers) / len, len == n);
+            // A PROSAC length is never the whole set (k < n - 1).
+            const int k_n = stopRule(double(inliers) / len, false);
             if (k_n < need) {
                 need = k_n;
                 length = len;

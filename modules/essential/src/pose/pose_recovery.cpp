@@ -10,11 +10,13 @@
 #include "pose/pose_recovery.hpp"
 
 #include "geometry/essential_decomposition.hpp"
+#include "simd_dispatch.hpp"
 
 #include <Eigen/Core>
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace cv {
 namespace essential {
@@ -22,26 +24,85 @@ namespace pose {
 
 namespace {
 
-/** Whether the correspondence (q1, q2), homogeneous with last coordinate 1, has positive depth in
-both views for the pose (R, t), X2 = R X1 + t.
+#if defined(__GNUC__)
+#define ESSENTIAL_INLINE_POSE inline __attribute__((always_inline))
+#else
+#define ESSENTIAL_INLINE_POSE inline
+#endif
+
+/** Bits of the four candidates, in the order cv::recoverPose tries them. */
+constexpr int kR1Plus = 1, kR2Plus = 2, kR1Minus = 4, kR2Minus = 8;
+
+/** The depth signs of the correspondence (q1, q2) = ((x1, y1, 1), (x2, y2, 1)) under the rotation
+R (row-major r) and the unit translation t (X2 = R X1 + t): the bit `plus` when both depths are
+positive, `minus` when both are negative, which is when both are positive under (R, -t).
 
 With a = R q1 and b = q2 the depths minimise |z1 a + t - z2 b|^2, whose normal equations are
     [ a.a  -a.b ] [z1]   [ -a.t ]
     [ -a.b  b.b ] [z2] = [  b.t ].
 Their determinant d = |a|^2 |b|^2 - (a.b)^2 = |a x b|^2 is >= 0, so the signs of the depths are
-those of the numerators of Cramer's rule; parallel rays (d = 0) have no depth and never count. */
-inline bool inFront(const Eigen::Matrix3d& R, const Eigen::Vector3d& t, const Point2d& q1,
-                    const Point2d& q2)
+those of the numerators of Cramer's rule; parallel rays (d = 0) have no depth and never count.
+Negating t negates a.t and b.t, so both numerators change sign exactly (floating-point negation and
+round-to-nearest are symmetric): one evaluation decides both signs of t. Branch-free, so that the
+loop over the points vectorises. */
+inline int depthSignBits(const double* r, const double* t, double x1, double y1, double x2,
+                         double y2, int plus, int minus)
 {
-    const Eigen::Vector3d a = R * Eigen::Vector3d(q1.x, q1.y, 1.0);
-    const Eigen::Vector3d b(q2.x, q2.y, 1.0);
-    const double aa = a.dot(a), bb = b.dot(b), ab = a.dot(b);
-    const double at = a.dot(t), bt = b.dot(t);
+    const double a0 = r[0] * x1 + r[1] * y1 + r[2];
+    const double a1 = r[3] * x1 + r[4] * y1 + r[5];
+    const double a2 = r[6] * x1 + r[7] * y1 + r[8];
+    const double aa = a0 * a0 + a1 * a1 + a2 * a2;
+    const double bb = x2 * x2 + y2 * y2 + 1.0;
+    const double ab = a0 * x2 + a1 * y2 + a2;
+    const double at = a0 * t[0] + a1 * t[1] + a2 * t[2];
+    const double bt = x2 * t[0] + y2 * t[1] + t[2];
     const double det = aa * bb - ab * ab;
-    if (!(det > 0.0)) return false;
     const double z1 = ab * bt - at * bb; // times det
     const double z2 = aa * bt - ab * at; // times det
-    return z1 > 0.0 && z2 > 0.0;
+    const int solvable = det > 0.0;
+    const int front = (z1 > 0.0) & (z2 > 0.0), behind = (z1 < 0.0) & (z2 < 0.0);
+    return solvable * (front * plus + behind * minus);
+}
+
+/** The four candidates' verdicts on every point as bits (0 for the points maskIn leaves out),
+written to bits[] (which may alias maskIn) and counted per candidate. */
+template <bool kMasked>
+ESSENTIAL_INLINE_POSE void voteAll(const Problem& points, const double* r1, const double* r2,
+                                   const double* t, const uchar* maskIn, uchar* bits, int counts[4])
+{
+    const int n = points.size();
+    const double* x1 = points.x1.data();
+    const double* y1 = points.y1.data();
+    const double* x2 = points.x2.data();
+    const double* y2 = points.y2.data();
+    int c0 = 0, c1 = 0, c2 = 0, c3 = 0;
+    for (int i = 0; i < n; ++i) {
+        const int used = kMasked ? maskIn[i] != 0 : 1;
+        const int b = used * (depthSignBits(r1, t, x1[i], y1[i], x2[i], y2[i], kR1Plus, kR1Minus) |
+                              depthSignBits(r2, t, x1[i], y1[i], x2[i], y2[i], kR2Plus, kR2Minus));
+        c0 += b & 1;
+        c1 += (b >> 1) & 1;
+        c2 += (b >> 2) & 1;
+        c3 += (b >> 3) & 1;
+        bits[i] = static_cast<uchar>(b);
+    }
+    counts[0] = c0;
+    counts[1] = c1;
+    counts[2] = c2;
+    counts[3] = c3;
+}
+
+ESSENTIAL_AVX2_CLONES void voteMasked(const Problem& points, const double* r1, const double* r2,
+                                      const double* t, const uchar* maskIn, uchar* bits,
+                                      int counts[4])
+{
+    voteAll<true>(points, r1, r2, t, maskIn, bits, counts);
+}
+
+ESSENTIAL_AVX2_CLONES void voteUnmasked(const Problem& points, const double* r1, const double* r2,
+                                        const double* t, uchar* bits, int counts[4])
+{
+    voteAll<false>(points, r1, r2, t, nullptr, bits, counts);
 }
 
 } // namespace
@@ -71,32 +132,38 @@ bool recoverPoseNormalised(const Matx33d& E, const Problem& points, const uchar*
         return false;
     }
 
-    // The candidates in the order cv::recoverPose tries them; ties go to the first, as there.
-    const Eigen::Matrix3d* rotations[4] = {&R1, &R2, &R1, &R2};
-    const Eigen::Vector3d translations[4] = {t, t, -t, -t};
-    int counts[4] = {0, 0, 0, 0};
-    for (int i = 0; i < n; ++i) {
-        if (maskIn && !maskIn[i]) continue;
-        for (int c = 0; c < 4; ++c)
-            if (inFront(*rotations[c], translations[c], points.point1(i), points.point2(i)))
-                ++counts[c];
-    }
-    const int best = static_cast<int>(std::max_element(counts, counts + 4) - counts);
-
-    if (maskOut) {
-        // maskOut may alias maskIn: read each entry before writing it.
-        for (int i = 0; i < n; ++i) {
-            const bool used = !maskIn || maskIn[i] != 0;
-            maskOut[i] = (used && inFront(*rotations[best], translations[best], points.point1(i),
-                                          points.point2(i)))
-                             ? uchar(1)
-                             : uchar(0);
+    // The candidates in the order cv::recoverPose tries them, (R1, t), (R2, t), (R1, -t),
+    // (R2, -t); ties go to the first, as there. Each point's four verdicts are kept as bits (in
+    // maskOut, which may alias maskIn: each entry is read before it is written, or in a buffer)
+    // for the mask of the chosen pose.
+    double r1[9], r2[9];
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) {
+            r1[3 * i + j] = R1(i, j);
+            r2[3 * i + j] = R2(i, j);
         }
+    const double tv[3] = {t[0], t[1], t[2]};
+    std::vector<uchar> scratch;
+    uchar* bits = maskOut;
+    if (!bits) {
+        scratch.resize(static_cast<size_t>(n));
+        bits = scratch.data();
     }
+    int counts[4] = {0, 0, 0, 0};
+    if (maskIn)
+        voteMasked(points, r1, r2, tv, maskIn, bits, counts);
+    else
+        voteUnmasked(points, r1, r2, tv, bits, counts);
+    const int best = static_cast<int>(std::max_element(counts, counts + 4) - counts);
+    if (maskOut)
+        for (int i = 0; i < n; ++i)
+            maskOut[i] = static_cast<uchar>((maskOut[i] >> best) & 1);
+    const Eigen::Matrix3d& R = best % 2 == 0 ? R1 : R2;
+    const double sign = best < 2 ? 1.0 : -1.0;
     for (int i = 0; i < 3; ++i) {
         for (int j = 0; j < 3; ++j)
-            out.R(i, j) = (*rotations[best])(i, j);
-        out.t[i] = translations[best][i];
+            out.R(i, j) = R(i, j);
+        out.t[i] = sign * t[i];
     }
     out.inFront = counts[best];
     return true;

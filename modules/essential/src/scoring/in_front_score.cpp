@@ -7,6 +7,7 @@
 #include "geometry/sampson.hpp"
 #include "geometry/symmetric_epipolar.hpp"
 #include "pose/pose_recovery.hpp"
+#include "simd_dispatch.hpp"
 
 #include <Eigen/Core>
 
@@ -34,8 +35,79 @@ struct FourPoses
     std::array<double, 4> cost{};
 };
 
+#if defined(__GNUC__)
+#define ESSENTIAL_INLINE_SCORE inline __attribute__((always_inline))
+#else
+#define ESSENTIAL_INLINE_SCORE inline
+#endif
+
+/** Points per block of inFrontOfFourPoses' two passes, small enough for the block's arrays to stay
+in L1. */
+constexpr int kBlock = 128;
+
+/** The depth signs of one point under (R, +-t), R row-major, as bits: `plus` when both depths are
+positive under (R, t), `minus` under (R, -t) (both negative under (R, t)), both when the parallax is
+below minParallax and the signs do not decide (geometry::scaledDepths, written out with scalars and
+no branch so that the loop over a block vectorises; the same products and sums in the same order).
+*/
+inline int depthSigns(const double* r, const double* t, double x1, double y1, double x2, double y2,
+                      double minParallax2, int plus, int minus)
+{
+    const double a0 = r[0] * x1 + r[1] * y1 + r[2];
+    const double a1 = r[3] * x1 + r[4] * y1 + r[5];
+    const double a2 = r[6] * x1 + r[7] * y1 + r[8];
+    // c = q2 x a, q2 = (x2, y2, 1)
+    const double c0 = y2 * a2 - a1;
+    const double c1 = a0 - x2 * a2;
+    const double c2 = x2 * a1 - y2 * a0;
+    const double cc = c0 * c0 + c1 * c1 + c2 * c2;
+    const double aa = a0 * a0 + a1 * a1 + a2 * a2;
+    const double qq = x2 * x2 + y2 * y2 + 1.0;
+    // depth1 = -(q2 x t).c, depth2 = -(a x t).c
+    const double u0 = y2 * t[2] - t[1], u1 = t[0] - x2 * t[2], u2 = x2 * t[1] - y2 * t[0];
+    const double v0 = a1 * t[2] - a2 * t[1], v1 = a2 * t[0] - a0 * t[2], v2 = a0 * t[1] - a1 * t[0];
+    const double depth1 = -(u0 * c0 + u1 * c1 + u2 * c2);
+    const double depth2 = -(v0 * c0 + v1 * c1 + v2 * c2);
+    const int undecided = cc <= minParallax2 * aa * qq;
+    const int front = undecided | ((depth1 > 0.0) & (depth2 > 0.0));
+    const int behind = undecided | ((depth1 < 0.0) & (depth2 < 0.0));
+    return front * plus + behind * minus;
+}
+
+/** First pass over a block: each point's squared distance and its verdicts as bits, in the order
+(R1, t), (R1, -t), (R2, t), (R2, -t); 0 for the points beyond the threshold. */
+template <bool kSymmetric>
+ESSENTIAL_INLINE_SCORE void
+verdicts(const geometry::EssentialEntries& e, const double* r1, const double* r2, const double* t,
+         const double* x1, const double* y1, const double* x2, const double* y2, int count,
+         double t2, double minParallax2, double* d2, int* bits)
+{
+    for (int i = 0; i < count; ++i) {
+        const geometry::SampsonTerms terms = geometry::sampsonTerms(e, x1[i], y1[i], x2[i], y2[i]);
+        const double d = kSymmetric ? geometry::symmetricEpipolarSquared(terms)
+                                    : geometry::sampsonSquared(terms);
+        const int inlier = d <= t2;
+        d2[i] = d;
+        bits[i] = inlier * (depthSigns(r1, t, x1[i], y1[i], x2[i], y2[i], minParallax2, 1, 2) |
+                            depthSigns(r2, t, x1[i], y1[i], x2[i], y2[i], minParallax2, 4, 8));
+    }
+}
+
+ESSENTIAL_AVX2_CLONES void blockVerdicts(const geometry::EssentialEntries& e, const double* r1,
+                                         const double* r2, const double* t, const double* x1,
+                                         const double* y1, const double* x2, const double* y2,
+                                         int count, bool symmetric, double t2, double minParallax2,
+                                         double* d2, int* bits)
+{
+    if (symmetric)
+        verdicts<true>(e, r1, r2, t, x1, y1, x2, y2, count, t2, minParallax2, d2, bits);
+    else
+        verdicts<false>(e, r1, r2, t, x1, y1, x2, y2, count, t2, minParallax2, d2, bits);
+}
+
 /** For every inlier (distance at most threshold): its squared distance added to the poses that
-place it in front of both cameras (geometry::scaledDepths; -t flips both depth signs). */
+place it in front of both cameras (geometry::scaledDepths; -t flips both depth signs). The costs are
+summed in the points' order, as one loop over them would. */
 FourPoses inFrontOfFourPoses(const Matx33d& E, const Problem& problem, InlierTest test, bool& ok)
 {
     FourPoses out;
@@ -47,28 +119,28 @@ FourPoses inFrontOfFourPoses(const Matx33d& E, const Problem& problem, InlierTes
     const bool symmetric = test.distance == DISTANCE_SYMMETRIC_EPIPOLAR;
     const double t2 = test.threshold * test.threshold;
     const double minParallax = kUndecidedParallax * test.threshold;
+    double r[2][9];
+    for (int k = 0; k < 2; ++k)
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j)
+                r[k][3 * i + j] = R[k](i, j);
+    const double tv[3] = {t[0], t[1], t[2]};
     const int n = problem.size();
-    for (int i = 0; i < n; ++i) {
-        const double x1 = problem.x1[i], y1 = problem.y1[i], x2 = problem.x2[i], y2 = problem.y2[i];
-        const double d2 = symmetric ? geometry::symmetricEpipolarSquared(e, x1, y1, x2, y2)
-                                    : geometry::sampsonSquared(e, x1, y1, x2, y2);
-        if (!(d2 <= t2)) continue;
-        const Eigen::Vector3d q1(x1, y1, 1.0), q2(x2, y2, 1.0);
-        for (int r = 0; r < 2; ++r) {
-            double depth1, depth2;
-            bool plus = true, minus = true;
-            if (geometry::scaledDepths(R[r] * q1, q2, t, minParallax, depth1, depth2)) {
-                plus = depth1 > 0.0 && depth2 > 0.0;
-                minus = depth1 < 0.0 && depth2 < 0.0;
-            }
-            if (plus) {
-                ++out.count[2 * r];
-                out.cost[2 * r] += d2;
-            }
-            if (minus) {
-                ++out.count[2 * r + 1];
-                out.cost[2 * r + 1] += d2;
-            }
+    alignas(32) double d2[kBlock];
+    alignas(32) int bits[kBlock];
+    for (int begin = 0; begin < n; begin += kBlock) {
+        const int count = std::min(kBlock, n - begin);
+        blockVerdicts(e, r[0], r[1], tv, problem.x1.data() + begin, problem.y1.data() + begin,
+                      problem.x2.data() + begin, problem.y2.data() + begin, count, symmetric, t2,
+                      minParallax * minParallax, d2, bits);
+        for (int i = 0; i < count; ++i) {
+            const int b = bits[i];
+            if (!b) continue;
+            for (int k = 0; k < 4; ++k)
+                if (b & (1 << k)) {
+                    ++out.count[static_cast<size_t>(k)];
+                    out.cost[static_cast<size_t>(k)] += d2[i];
+                }
         }
     }
     return out;

@@ -115,21 +115,26 @@ Problem makeProblem(const std::vector<Point2d>& n1, const std::vector<Point2d>& 
     return p;
 }
 
+void gatherProblem(const Problem& problem, const int* indices, int count, Problem& out)
+{
+    const size_t n = static_cast<size_t>(count);
+    out.x1.resize(n);
+    out.y1.resize(n);
+    out.x2.resize(n);
+    out.y2.resize(n);
+    for (size_t i = 0; i < n; ++i) {
+        const size_t k = static_cast<size_t>(indices[i]);
+        out.x1[i] = problem.x1[k];
+        out.y1[i] = problem.y1[k];
+        out.x2[i] = problem.x2[k];
+        out.y2[i] = problem.y2[k];
+    }
+}
+
 Problem subsetProblem(const Problem& problem, const int* indices, int count)
 {
     Problem p;
-    const size_t n = static_cast<size_t>(count);
-    p.x1.resize(n);
-    p.y1.resize(n);
-    p.x2.resize(n);
-    p.y2.resize(n);
-    for (size_t i = 0; i < n; ++i) {
-        const size_t k = static_cast<size_t>(indices[i]);
-        p.x1[i] = problem.x1[k];
-        p.y1[i] = problem.y1[k];
-        p.x2[i] = problem.x2[k];
-        p.y2[i] = problem.y2[k];
-    }
+    gatherProblem(problem, indices, count, p);
     return p;
 }
 

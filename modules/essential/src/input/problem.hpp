@@ -81,6 +81,11 @@ Problem makeProblem(const std::vector<Point2d>& n1, const std::vector<Point2d>& 
 near a model fits. */
 Problem subsetProblem(const Problem& problem, const int* indices, int count);
 
+/** subsetProblem into `out`, whose storage is reused: a caller that gathers subsets again and
+again (the local optimisation, once per new best model) allocates only when a subset is larger
+than every one before. */
+void gatherProblem(const Problem& problem, const int* indices, int count, Problem& out);
+
 /** The points whose `mask` entry is non-zero, in their order. */
 Problem maskedProblem(const Problem& problem, const uchar* mask);
 

@@ -134,11 +134,11 @@ void LocalOptimisation::polish(const Matx33d& start, RNG& rng, BestModel& best,
         k = settings_.sampleSize;
     }
     if (k < 5) return; // IRLS fits 5 degrees of freedom
-    const Problem subset = subsetProblem(problem_, chosen_.data(), k);
+    gatherProblem(problem_, chosen_.data(), k, subset_);
     refine::IrlsSettings irls;
     irls.maxIterations = settings_.iterations;
     ++counters.polishes;
-    const refine::IrlsResult refined = refine::refineIrls(subset, start, settings_.scale, irls);
+    const refine::IrlsResult refined = refine::refineIrls(subset_, start, settings_.scale, irls);
     if (!refined.improved) return;
     const scoring::Score s = score_(refined.E, best.score.cost);
     counters.pointsScored += s.scored;

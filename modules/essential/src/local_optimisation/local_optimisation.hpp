@@ -93,6 +93,7 @@ private:
     int minInliers_;
     std::vector<uchar> mask_;
     std::vector<int> chosen_;
+    Problem subset_; //!< the points a polish fits, its storage kept from one polish to the next
     sampling::SampleBuffer inner_;
     RNG innerRng_;
 };

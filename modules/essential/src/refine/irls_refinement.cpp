@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 namespace cv {
 namespace essential {
@@ -29,6 +30,48 @@ constexpr int kBlock = 64;
 
 /** Interleaved partial sums per entry of A and g: 4 fills one AVX register or two SSE2 ones. */
 constexpr int kLanes = 4;
+
+/** kLanes doubles added and multiplied lane by lane: the partial sums of the normal equations.
+With GCC's vector extension each operation is one AVX2 instruction (two SSE2 ones) whatever the
+loop vectoriser decides (on the plain lane loop it vectorised across blocks, with shuffles and
+spills); elsewhere a plain loop per operation. Lane-wise arithmetic is the same IEEE arithmetic per
+lane, so both give the same sums. lanesAt() reads kLanes doubles in place (a may_alias type, so
+reading a double array through it is defined; returned by reference, so no vector crosses a call
+boundary in the SSE2 clone). */
+#if defined(__GNUC__)
+typedef double Lanes __attribute__((vector_size(kLanes * sizeof(double))));
+typedef double LanesInMemory
+    __attribute__((vector_size(kLanes * sizeof(double)), may_alias, aligned(sizeof(double))));
+inline const LanesInMemory& lanesAt(const double* p)
+{
+    return *reinterpret_cast<const LanesInMemory*>(p);
+}
+#else
+struct Lanes
+{
+    double v[kLanes] = {};
+    double operator[](int l) const { return v[l]; }
+    friend Lanes operator*(const Lanes& a, const Lanes& b)
+    {
+        Lanes c;
+        for (int l = 0; l < kLanes; ++l)
+            c.v[l] = a.v[l] * b.v[l];
+        return c;
+    }
+    Lanes& operator+=(const Lanes& b)
+    {
+        for (int l = 0; l < kLanes; ++l)
+            v[l] += b.v[l];
+        return *this;
+    }
+};
+inline Lanes lanesAt(const double* p)
+{
+    Lanes v;
+    std::memcpy(v.v, p, sizeof v.v);
+    return v;
+}
+#endif
 
 /** evaluate() for one loss (a compile-time choice, so that the per-point loop has no branch on
 it and stays vectorised), inlined into each AVX2 / default clone of its callers. */
@@ -68,7 +111,7 @@ ESSENTIAL_INLINE_INTO_CLONES double evaluateLoss(const Problem& p, const Essenti
             for (int c = 0; c < 3; ++c)
                 dE[m][3 * r + c] = derivatives.dE[m](r, c);
     alignas(32) double S[kBlock], W[kBlock], U[kBlock], J[5][kBlock];
-    alignas(32) double acc[20][kLanes] = {};
+    Lanes acc[20] = {};
     for (int begin = 0; begin < n; begin += kBlock) {
         const int count = std::min(kBlock, n - begin);
         const double* bx1 = x1 + begin;
@@ -101,32 +144,31 @@ ESSENTIAL_INLINE_INTO_CLONES double evaluateLoss(const Problem& p, const Essenti
         }
         const int padded = (count + kLanes - 1) / kLanes * kLanes;
         for (int i = 0; i < padded; i += kLanes) {
-            for (int l = 0; l < kLanes; ++l) {
-                const double w = W[i + l], sv = S[i + l];
-                const double j0 = J[0][i + l], j1 = J[1][i + l], j2 = J[2][i + l];
-                const double j3 = J[3][i + l], j4 = J[4][i + l];
-                const double w0 = w * j0, w1 = w * j1, w2 = w * j2, w3 = w * j3, w4 = w * j4;
-                acc[0][l] += w0 * j0;
-                acc[1][l] += w0 * j1;
-                acc[2][l] += w0 * j2;
-                acc[3][l] += w0 * j3;
-                acc[4][l] += w0 * j4;
-                acc[5][l] += w1 * j1;
-                acc[6][l] += w1 * j2;
-                acc[7][l] += w1 * j3;
-                acc[8][l] += w1 * j4;
-                acc[9][l] += w2 * j2;
-                acc[10][l] += w2 * j3;
-                acc[11][l] += w2 * j4;
-                acc[12][l] += w3 * j3;
-                acc[13][l] += w3 * j4;
-                acc[14][l] += w4 * j4;
-                acc[15][l] += w0 * sv;
-                acc[16][l] += w1 * sv;
-                acc[17][l] += w2 * sv;
-                acc[18][l] += w3 * sv;
-                acc[19][l] += w4 * sv;
-            }
+            const Lanes w = lanesAt(W + i), sv = lanesAt(S + i);
+            const Lanes j0 = lanesAt(J[0] + i), j1 = lanesAt(J[1] + i);
+            const Lanes j2 = lanesAt(J[2] + i), j3 = lanesAt(J[3] + i);
+            const Lanes j4 = lanesAt(J[4] + i);
+            const Lanes w0 = w * j0, w1 = w * j1, w2 = w * j2, w3 = w * j3, w4 = w * j4;
+            acc[0] += w0 * j0;
+            acc[1] += w0 * j1;
+            acc[2] += w0 * j2;
+            acc[3] += w0 * j3;
+            acc[4] += w0 * j4;
+            acc[5] += w1 * j1;
+            acc[6] += w1 * j2;
+            acc[7] += w1 * j3;
+            acc[8] += w1 * j4;
+            acc[9] += w2 * j2;
+            acc[10] += w2 * j3;
+            acc[11] += w2 * j4;
+            acc[12] += w3 * j3;
+            acc[13] += w3 * j4;
+            acc[14] += w4 * j4;
+            acc[15] += w0 * sv;
+            acc[16] += w1 * sv;
+            acc[17] += w2 * sv;
+            acc[18] += w3 * sv;
+            acc[19] += w4 * sv;
         }
     }
     double sum[20];

@@ -17,6 +17,7 @@
 
 #include <limits>
 #include <random>
+#include <utility>
 
 namespace {
 
@@ -58,6 +59,36 @@ TEST(SmallLinearSolve, PartialPivotSolvesAsEigenDoes)
         const double cond = A.norm() * A.inverse().norm();
         EXPECT_LE((x - expected).norm(), 1e-13 * cond * expected.norm()) << "system " << i;
         EXPECT_LE((A * x - b).norm(), 1e-12 * (A.norm() * x.norm() + b.norm())) << "system " << i;
+    }
+}
+
+// The fused elimination is the factorisation followed by getrs's substitutions, to the bit.
+TEST(SmallLinearSolve, EliminationEqualsFactorisationAndSubstitution)
+{
+    std::mt19937_64 g(3);
+    for (int i = 0; i < 2000; ++i) {
+        const Matrix5d A = randomMatrix(g);
+        const Vector5d b = randomVector(g);
+        Matrix5d LU = A;
+        int pivot[5];
+        double sign;
+        ASSERT_TRUE(factorPartialPivot<5>(LU, pivot, sign));
+        Vector5d y = b, expected;
+        for (int k = 0; k < 5; ++k)
+            std::swap(y[k], y[pivot[k]]);
+        for (int k = 0; k < 5; ++k)
+            for (int r = k + 1; r < 5; ++r)
+                y[r] -= LU(r, k) * y[k];
+        for (int r = 4; r >= 0; --r) {
+            double sum = y[r];
+            for (int j = r + 1; j < 5; ++j)
+                sum -= LU(r, j) * expected[j];
+            expected[r] = sum / LU(r, r);
+        }
+        Vector5d x;
+        ASSERT_TRUE(solvePartialPivot<5>(A, b, x));
+        for (int k = 0; k < 5; ++k)
+            ASSERT_EQ(x[k], expected[k]) << "system " << i << " entry " << k;
     }
 }
 

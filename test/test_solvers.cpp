@@ -15,6 +15,10 @@
 
 #include <opencv2/essential.hpp>
 
+#include <algorithm>
+#include <numeric>
+#include <vector>
+
 #include "essential_test.hpp"
 
 namespace {
@@ -314,19 +318,38 @@ TEST(Solvers, CoplanarityCostVanishesAtTheTrueRotation)
 }
 
 // The ranking's batched costs are the scalar definition's, bit for bit: the same operations in the
-// same order, only laid out over the 36 rotations (so the ranking, and every rate, is unchanged).
-TEST(Solvers, BatchedCoplanarityCostsEqualTheDefinition)
+// same order, only laid out over the 36 rotations (so the ranking, and every rate, is unchanged);
+// the ranking orders them.
+TEST(Solvers, BatchedCoplanarityCostsEqualTheDefinitionAndRankTheStarts)
 {
     using cv::essential::solvers::StartRotations;
     for (uint64_t seed = 1; seed <= 200; ++seed) {
         const auto scene = binProblem(seed % 2 == 0, 0, 90, seed);
         double costs[StartRotations::kCount];
         cv::essential::solvers::coplanarityCosts<5>(scene.x1.data(), scene.x2.data(), costs);
-        for (int i = 0; i < StartRotations::kCount; ++i)
-            ASSERT_EQ(costs[i],
-                      cv::essential::solvers::coplanarityCost(StartRotations::instance()[i],
-                                                              scene.x1.data(), scene.x2.data(), 5))
-                << "seed " << seed << " rotation " << i;
+        // The solvers' entry point: its AVX2 clone on a CPU that has AVX2, the default one else.
+        double dispatched[StartRotations::kCount];
+        cv::essential::solvers::sampleCoplanarityCosts(scene.x1.data(), scene.x2.data(),
+                                                       dispatched);
+        for (int i = 0; i < StartRotations::kCount; ++i) {
+            const double definition = cv::essential::solvers::coplanarityCost(
+                StartRotations::instance()[i], scene.x1.data(), scene.x2.data(), 5);
+            ASSERT_EQ(costs[i], definition) << "seed " << seed << " rotation " << i;
+            ASSERT_EQ(dispatched[i], definition) << "seed " << seed << " rotation " << i;
+        }
+        // The ranking is the first entries of the costs stably sorted: ascending, ties by index.
+        std::vector<int> order(StartRotations::kCount);
+        std::iota(order.begin(), order.end(), 0);
+        std::stable_sort(order.begin(), order.end(),
+                         [&](int a, int b) { return costs[a] < costs[b]; });
+        for (int count : {8, 3}) {
+            int best[8];
+            cv::essential::solvers::rankStartRotations(scene.x1.data(), scene.x2.data(), count,
+                                                       best);
+            for (int k = 0; k < count; ++k)
+                ASSERT_EQ(best[k], order[static_cast<size_t>(k)])
+                    << "seed " << seed << " rank " << k << " of " << count;
+        }
     }
 }
 
@@ -346,6 +369,32 @@ TEST(Solvers, DegenerateSamplesGiveNoSolution)
         auto solver = cv::essential::createSolver(name);
         EXPECT_EQ(solver->solve(same1.data(), same2.data(), rng, E), 0) << name << ", rank 1";
         EXPECT_EQ(solver->solve(two1.data(), two2.data(), rng, E), 0) << name << ", rank 2";
+    }
+}
+
+// The dependence test itself: no sample of five distinct points of a scene is dependent, and any
+// repetition is (ranks 1 to 4), at the image scales of both cameras.
+TEST(Solvers, DependentConstraintsAreDetected)
+{
+    using cv::essential::solvers::constraintsAreDependent;
+    for (uint64_t seed = 1; seed <= 400; ++seed) {
+        const auto scene = binProblem(seed % 2 == 0, 0, 90, seed);
+        std::vector<cv::Point2d> x1 = scene.x1, x2 = scene.x2;
+        if (seed % 4 == 1) // the wide camera's normalised coordinates reach 1.5 and beyond
+            for (size_t i = 0; i < 5; ++i) {
+                x1[i] *= 3.0;
+                x2[i] *= 3.0;
+            }
+        EXPECT_FALSE(constraintsAreDependent(x1.data(), x2.data())) << "seed " << seed;
+        for (int distinct = 1; distinct <= 4; ++distinct) {
+            std::vector<cv::Point2d> r1(5), r2(5);
+            for (size_t i = 0; i < 5; ++i) {
+                r1[i] = x1[i % size_t(distinct)];
+                r2[i] = x2[i % size_t(distinct)];
+            }
+            EXPECT_TRUE(constraintsAreDependent(r1.data(), r2.data()))
+                << "seed " << seed << ", " << distinct << " distinct";
+        }
     }
 }
 

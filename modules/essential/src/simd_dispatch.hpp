@@ -19,4 +19,13 @@
 #define ESSENTIAL_AVX2_CLONES
 #endif
 
+/** For a loop in a header that a marked function calls: GCC does not inline a function into a
+caller with a different target unless told to, and the loop would then run its default build from
+both clones. */
+#if defined(__GNUC__)
+#define ESSENTIAL_INLINE_INTO_CLONES inline __attribute__((always_inline))
+#else
+#define ESSENTIAL_INLINE_INTO_CLONES inline
+#endif
+
 #endif

@@ -84,16 +84,22 @@ since G1 e1 = -e2 and G2 e1 = -e3. */
 inline double residualAndJacobian(const ResidualFrame& f, double x1, double y1, double x2,
                                   double y2, double J[5])
 {
-    const Eigen::Vector3d a = f.R * Eigen::Vector3d(x1, y1, 1.0);
-    const Eigen::Vector3d q2(x2, y2, 1.0);
-    const Eigen::Vector3d c = a.cross(q2);
-    const Eigen::Vector3d b = q2.cross(f.t);
-    J[0] = b.x() * a.y() - b.y() * a.x();
-    J[1] = b.x() * a.z() - b.z() * a.x();
-    J[2] = b.y() * a.z() - b.z() * a.y();
-    J[3] = -f.u.dot(c);
-    J[4] = -f.v.dot(c);
-    return f.t.dot(c);
+    // Scalar arithmetic rather than Eigen's 3-vectors: those go into SSE2 pairs plus a lone
+    // third entry, and the shuffles between them outnumbered the multiply-adds (callgrind).
+    const Eigen::Matrix3d& R = f.R;
+    const double a0 = R(0, 0) * x1 + R(0, 1) * y1 + R(0, 2);
+    const double a1 = R(1, 0) * x1 + R(1, 1) * y1 + R(1, 2);
+    const double a2 = R(2, 0) * x1 + R(2, 1) * y1 + R(2, 2);
+    // c = a x q2, b = q2 x t, with q2 = (x2, y2, 1)
+    const double c0 = a1 - a2 * y2, c1 = a2 * x2 - a0, c2 = a0 * y2 - a1 * x2;
+    const double t0 = f.t.x(), t1 = f.t.y(), t2 = f.t.z();
+    const double b0 = y2 * t2 - t1, b1 = t0 - x2 * t2, b2 = x2 * t1 - y2 * t0;
+    J[0] = b0 * a1 - b1 * a0;
+    J[1] = b0 * a2 - b2 * a0;
+    J[2] = b1 * a2 - b2 * a1;
+    J[3] = -(f.u.x() * c0 + f.u.y() * c1 + f.u.z() * c2);
+    J[4] = -(f.v.x() * c0 + f.v.y() * c1 + f.v.z() * c2);
+    return t0 * c0 + t1 * c1 + t2 * c2;
 }
 
 /** E and its derivatives dE/dd_k along the five parameter directions, computed once per pose:

@@ -34,18 +34,21 @@ inline Eigen::Matrix3d expSO3(const Eigen::Vector3d& w)
     const double t2 = w.squaredNorm();
     double a, b;
     if (t2 < 0.25) {
-        // Horner in theta^2: a = sum (-t2)^k / (2k + 1)!, b = sum (-t2)^k / (2k + 2)!.
-        a = 1.0 -
-            t2 / 6.0 *
-                (1.0 - t2 / 20.0 *
-                           (1.0 - t2 / 42.0 *
-                                      (1.0 - t2 / 72.0 * (1.0 - t2 / 110.0 * (1.0 - t2 / 156.0)))));
-        b = 0.5 *
-            (1.0 - t2 / 12.0 *
-                       (1.0 - t2 / 30.0 *
-                                  (1.0 - t2 / 56.0 *
-                                             (1.0 - t2 / 90.0 *
-                                                        (1.0 - t2 / 132.0 * (1.0 - t2 / 182.0))))));
+        // Horner in theta^2: a = sum (-t2)^k / (2k + 1)!, b = sum (-t2)^k / (2k + 2)!, k = 0..6.
+        // The coefficients as constants, so that every step is a multiplication and an addition:
+        // written as divisions by (2k)(2k + 1) they stay divisions without -freciprocal-math.
+        static constexpr double kA[7] = {
+            1.0,          -1.0 / 6,        1.0 / 120,         -1.0 / 5040,
+            1.0 / 362880, -1.0 / 39916800, 1.0 / 6227020800.0};
+        static constexpr double kB[7] = {
+            0.5,           -1.0 / 24,        1.0 / 720,          -1.0 / 40320,
+            1.0 / 3628800, -1.0 / 479001600, 1.0 / 87178291200.0};
+        a = kA[6];
+        b = kB[6];
+        for (int k = 5; k >= 0; --k) {
+            a = a * t2 + kA[k];
+            b = b * t2 + kB[k];
+        }
     } else {
         const double theta = std::sqrt(t2);
         a = std::sin(theta) / theta;

@@ -75,11 +75,6 @@ inline Lanes lanesAt(const double* p)
 
 /** evaluate() for one loss (a compile-time choice, so that the per-point loop has no branch on
 it and stays vectorised), inlined into each AVX2 / default clone of its callers. */
-#if defined(__GNUC__)
-#define ESSENTIAL_INLINE_INTO_CLONES inline __attribute__((always_inline))
-#else
-#define ESSENTIAL_INLINE_INTO_CLONES inline
-#endif
 template <class Loss>
 ESSENTIAL_INLINE_INTO_CLONES double evaluateLoss(const Problem& p, const EssentialPose& pose,
                                                  double sigma2, Matrix5d* A, Vector5d* g)

@@ -9,6 +9,7 @@
 #define OPENCV_ESSENTIAL_SOLVERS_START_ROTATIONS_HPP
 
 #include "geometry/so3.hpp"
+#include "simd_dispatch.hpp"
 
 #include <opencv2/core.hpp>
 
@@ -102,8 +103,8 @@ coplanarityCost(StartRotations::instance()[i], x1, x2, N), the same operations i
 so that the compiler keeps the rotations' sums in vector registers. A point whose normal has no
 length adds nothing, as there (the input is finite: the module refuses non-finite points). */
 template <int N>
-inline void coplanarityCosts(const Point2d* x1, const Point2d* x2,
-                             double costs[StartRotations::kCount])
+ESSENTIAL_INLINE_INTO_CLONES void coplanarityCosts(const Point2d* x1, const Point2d* x2,
+                                                   double costs[StartRotations::kCount])
 {
     constexpr int K = StartRotations::kCount;
     const StartRotations& rotations = StartRotations::instance();
@@ -140,28 +141,14 @@ inline void coplanarityCosts(const Point2d* x1, const Point2d* x2,
                    s02[i] * (s01[i] * s12[i] - s11[i] * s02[i]);
 }
 
+/** coplanarityCosts<5>, compiled into an AVX2 clone as well (four rotations per vector instead of
+two), which the CPU picks at load time (simd_dispatch.hpp); the same results either way. */
+void sampleCoplanarityCosts(const Point2d* x1, const Point2d* x2,
+                            double costs[StartRotations::kCount]);
+
 /** Indices of the `count` candidates of StartRotations with the lowest coplanarity cost on the
-five-point sample, best first (count at most 8). */
-inline void rankStartRotations(const Point2d* x1, const Point2d* x2, int count, int* best)
-{
-    double costs[StartRotations::kCount];
-    coplanarityCosts<5>(x1, x2, costs);
-    double bestCost[8];
-    for (int k = 0; k < count; ++k) {
-        bestCost[k] = HUGE_VAL;
-        best[k] = 0;
-    }
-    for (int i = 0; i < StartRotations::kCount; ++i) {
-        double cost = costs[i];
-        int slot = i;
-        // insertion into the short sorted list
-        for (int k = 0; k < count; ++k)
-            if (cost < bestCost[k]) {
-                std::swap(cost, bestCost[k]);
-                std::swap(slot, best[k]);
-            }
-    }
-}
+five-point sample, best first (count at most 8; ties keep the lower index first). */
+void rankStartRotations(const Point2d* x1, const Point2d* x2, int count, int* best);
 
 } // namespace solvers
 } // namespace essential

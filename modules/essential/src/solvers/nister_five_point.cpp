@@ -49,7 +49,7 @@ void frameAbout(const double c[3], double angle, double R[3][3])
 }
 
 /** out (degree na + nb) = a (degree na) * b (degree nb). */
-inline void multiply(const double* a, int na, const double* b, int nb, double* out)
+ESSENTIAL_INLINE_INTO_CLONES void multiply(const double* a, int na, const double* b, int nb, double* out)
 {
     for (int i = 0; i <= na + nb; ++i)
         out[i] = 0.0;
@@ -103,17 +103,16 @@ double polishRoot(const double* d, int n, double lo, double hi, int maxIteration
         }
         if (step <= tolerance * std::max(1.0, std::abs(z))) break;
         polynomialValueAndDerivative(d, n, z, f, df);
-        if (f < 0.0)
-            lo = z;
-        else
-            hi = z;
+        const bool below = f < 0.0;
+        lo = below ? z : lo;
+        hi = below ? hi : z;
     }
     return z;
 }
 
 /** [I | A], the Gauss-Jordan form of the 5 x 9 epipolar constraint matrix of the sample in the
 coordinates q1' = R1 q1, q2' = R2 q2; false for a degenerate sample. */
-bool nullSpace(const double R1[3][3], const double R2[3][3], const Point2d* x1, const Point2d* x2,
+ESSENTIAL_INLINE_INTO_CLONES bool nullSpace(const double R1[3][3], const double R2[3][3], const Point2d* x1, const Point2d* x2,
                double A[5][4])
 {
     // Row i is q2 (x) q1, so that row . vec(E) = q2^T E q1 with E stored row-major (the paper's q~
@@ -140,15 +139,17 @@ bool nullSpace(const double R1[3][3], const double R2[3][3], const Point2d* x1, 
             if (std::abs(Q[r][c]) > std::abs(Q[p][c])) p = r;
         if (!(std::abs(Q[p][c]) > 1e-12 * scale)) return false;
         if (p != c)
-            for (int j = c; j < 9; ++j)
+            for (int j = 0; j < 9; ++j)
                 std::swap(Q[p][j], Q[c][j]);
+        // Whole rows, a loop of fixed length that runs in vector registers: columns up to c are
+        // never read again, and the columns after c get the same operations as before.
         const double inv = 1.0 / Q[c][c];
-        for (int j = c + 1; j < 9; ++j)
+        for (int j = 0; j < 9; ++j)
             Q[c][j] *= inv;
         for (int r = 0; r < 5; ++r) {
             if (r == c) continue;
             const double f = Q[r][c];
-            for (int j = c + 1; j < 9; ++j)
+            for (int j = 0; j < 9; ++j)
                 Q[r][j] -= f * Q[c][j];
         }
     }
@@ -231,7 +232,7 @@ struct FrameWork
 
 /** Null space, reduced constraints, C(z), d(z) and its Sturm sequence in one frame; false when the
 sample or M is degenerate or d vanishes. */
-bool prepareFrame(const double R1[3][3], const double R2[3][3], const Point2d* x1,
+ESSENTIAL_AVX2_CLONES bool prepareFrame(const double R1[3][3], const double R2[3][3], const Point2d* x1,
                   const Point2d* x2, double bound, FrameWork& w)
 {
     double B[6][10];
@@ -421,12 +422,11 @@ int NisterFivePointSolver::solve(const Point2d* x1, const Point2d* x2, RNG& /*rn
                 a = b = m;
                 break;
             }
-            if ((fm < 0.0) == (fa < 0.0)) {
-                a = m;
-                fa = fm;
-            } else {
-                b = m;
-            }
+            // Selects, not a branch: the side of the root is a coin toss to the predictor.
+            const bool sameSideAsA = (fm < 0.0) == (fa < 0.0);
+            a = sameSideAsA ? m : a;
+            fa = sameSideAsA ? fm : fa;
+            b = sameSideAsA ? b : m;
         }
         double z = a;
         if (a != b) {

@@ -14,9 +14,22 @@ namespace cv {
 namespace essential {
 namespace solvers {
 
-/** c[0] + c[1] t + ... + c[n] t^n by Horner's rule. */
+/** c[0] + ... + c[N] t^N by Horner's rule, the degree known at compile time (no loop left). */
+template <int N>
+inline double polynomialValueOfDegree(const double* c, double t)
+{
+    double v = c[N];
+#pragma GCC unroll 10
+    for (int i = N - 1; i >= 0; --i)
+        v = v * t + c[i];
+    return v;
+}
+
+/** c[0] + c[1] t + ... + c[n] t^n by Horner's rule. The five-point solver's d(z) is of degree 10
+but for degenerate samples, so that degree takes the loop-free path (the same operations). */
 inline double polynomialValue(const double* c, int n, double t)
 {
+    if (n == 10) return polynomialValueOfDegree<10>(c, t);
     double v = c[n];
 #pragma GCC unroll 10
     for (int i = n - 1; i >= 0; --i)
@@ -27,6 +40,16 @@ inline double polynomialValue(const double* c, int n, double t)
 /** d(t) and d'(t) together by Horner's rule. */
 inline void polynomialValueAndDerivative(const double* c, int n, double t, double& f, double& df)
 {
+    if (n == 10) {
+        f = c[10];
+        df = 0.0;
+#pragma GCC unroll 10
+        for (int i = 9; i >= 0; --i) {
+            df = df * t + f;
+            f = f * t + c[i];
+        }
+        return;
+    }
     f = c[n];
     df = 0.0;
 #pragma GCC unroll 10
@@ -56,6 +79,7 @@ public:
         for (int i = 0; i <= n; ++i)
             p_[0][i] = d[i];
         degree_[0] = n;
+        largest_[0] = maxAbs(p_[0], n);
         for (int i = 1; i <= n; ++i)
             p_[1][i - 1] = i * d[i];
         degree_[1] = n - 1;
@@ -67,7 +91,7 @@ public:
             const int m = degree_[k - 1], nk = degree_[k];
             for (int i = 0; i <= m; ++i)
                 r[i] = p_[k - 1][i];
-            const double scale = maxAbs(r, m);
+            const double scale = largest_[k - 1];
             const double lead = p_[k][nk];
             for (int i = m; i >= nk; --i) {
                 const double f = r[i] / lead;
@@ -132,14 +156,14 @@ private:
     /** Sign changes along v[0..n), zeros skipped (Sturm's theorem counts them so). */
     static int countSignChanges(const double* v, int n)
     {
-        int changes = 0;
-        bool previousNegative = false, havePrevious = false;
+        // Branch-free: the signs along a sequence follow no pattern the branch predictor could
+        // learn. `previous` is the sign of the last nonzero member (-1 or +1), 0 before the first;
+        // a zero member leaves it unchanged, and a NaN counts as positive, as v < 0 is false.
+        int changes = 0, previous = 0;
         for (int k = 0; k < n; ++k) {
-            if (v[k] == 0.0) continue;
-            const bool negative = v[k] < 0.0;
-            if (havePrevious && negative != previousNegative) ++changes;
-            previousNegative = negative;
-            havePrevious = true;
+            const int sign = v[k] == 0.0 ? 0 : (v[k] < 0.0 ? -1 : 1);
+            changes += sign * previous < 0;
+            previous = sign != 0 ? sign : previous;
         }
         return changes;
     }
@@ -151,18 +175,24 @@ private:
             m = std::max(m, std::abs(c[i]));
         return m;
     }
+    /** Scales member k by 1 / m, m = max |coefficient|, and records its new largest magnitude:
+    m * (1 / m), the product the largest coefficient becomes (rounding is monotonic, so no other
+    exceeds it); max(0, .) gives 0 where maxAbs would, should m be infinite. */
     void normalise(int k, double m)
     {
+        largest_[k] = m;
         if (m > 0.0) {
             const double s = 1.0 / m;
             for (int i = 0; i <= degree_[k]; ++i)
                 p_[k][i] *= s;
+            largest_[k] = std::max(0.0, m * s);
         }
     }
 
     double p_[11][11];
     double q_[11][11]; //!< q_[k]: the quotient of p(k-1) by p(k)
     double s_[11];     //!< s_[k]: the scale of the remainder that became p(k), k >= 2
+    double largest_[11]; //!< max |coefficient| of p(k), kept so that a division need not seek it
     int degree_[11];
     int qDegree_[11];
     int size_ = 0;

@@ -260,9 +260,10 @@ HEADER = """\
 //   x^3 y^3 x^2y xy^2 x^2z x^2 y^2z y^2 xyz xy xz^2 xz x yz^2 yz y z^3 z^2 z 1;
 // rows: det(E), then the entries (0,0), (0,1), ..., (2,2) of the trace constraint.
 // Cost: %(temps)d shared temporaries; %(mul)d multiplications and %(add)d additions in all.
+// Inlined into the AVX2 clone of its caller (ESSENTIAL_INLINE_INTO_CLONES, simd_dispatch.hpp).
 
 // clang-format off
-inline void nisterConstraintMatrix(const double A[5][4], double M[10][20])
+ESSENTIAL_INLINE_INTO_CLONES void nisterConstraintMatrix(const double A[5][4], double M[10][20])
 {
 """
 

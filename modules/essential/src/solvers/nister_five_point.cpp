@@ -49,7 +49,8 @@ void frameAbout(const double c[3], double angle, double R[3][3])
 }
 
 /** out (degree na + nb) = a (degree na) * b (degree nb). */
-ESSENTIAL_INLINE_INTO_CLONES void multiply(const double* a, int na, const double* b, int nb, double* out)
+ESSENTIAL_INLINE_INTO_CLONES void multiply(const double* a, int na, const double* b, int nb,
+                                           double* out)
 {
     for (int i = 0; i <= na + nb; ++i)
         out[i] = 0.0;
@@ -112,8 +113,8 @@ double polishRoot(const double* d, int n, double lo, double hi, int maxIteration
 
 /** [I | A], the Gauss-Jordan form of the 5 x 9 epipolar constraint matrix of the sample in the
 coordinates q1' = R1 q1, q2' = R2 q2; false for a degenerate sample. */
-ESSENTIAL_INLINE_INTO_CLONES bool nullSpace(const double R1[3][3], const double R2[3][3], const Point2d* x1, const Point2d* x2,
-               double A[5][4])
+ESSENTIAL_INLINE_INTO_CLONES bool nullSpace(const double R1[3][3], const double R2[3][3],
+                                            const Point2d* x1, const Point2d* x2, double A[5][4])
 {
     // Row i is q2 (x) q1, so that row . vec(E) = q2^T E q1 with E stored row-major (the paper's q~
     // and E~).
@@ -232,8 +233,9 @@ struct FrameWork
 
 /** Null space, reduced constraints, C(z), d(z) and its Sturm sequence in one frame; false when the
 sample or M is degenerate or d vanishes. */
-ESSENTIAL_AVX2_CLONES bool prepareFrame(const double R1[3][3], const double R2[3][3], const Point2d* x1,
-                  const Point2d* x2, double bound, FrameWork& w)
+ESSENTIAL_AVX2_CLONES bool prepareFrame(const double R1[3][3], const double R2[3][3],
+                                        const Point2d* x1, const Point2d* x2, double bound,
+                                        FrameWork& w)
 {
     double B[6][10];
     if (!nullSpace(R1, R2, x1, x2, w.A) || !reduceConstraints(w.A, B)) return false;

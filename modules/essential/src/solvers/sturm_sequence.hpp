@@ -15,8 +15,7 @@ namespace essential {
 namespace solvers {
 
 /** c[0] + ... + c[N] t^N by Horner's rule, the degree known at compile time (no loop left). */
-template <int N>
-inline double polynomialValueOfDegree(const double* c, double t)
+template <int N> inline double polynomialValueOfDegree(const double* c, double t)
 {
     double v = c[N];
 #pragma GCC unroll 10
@@ -119,16 +118,22 @@ public:
     /** Sign changes of the sequence at t (zeros skipped). */
     int signChanges(double t) const
     {
-        double v[11];
+        // The changes are counted from the last member up, as the recurrence produces them (the
+        // count of a sequence read backwards is the same).
         const int last = size_ - 1;
-        v[last] = polynomialValue(p_[last], degree_[last], t);
-        v[last - 1] = polynomialValue(p_[last - 1], degree_[last - 1], t);
+        double above = polynomialValue(p_[last], degree_[last], t);
+        double v = polynomialValue(p_[last - 1], degree_[last - 1], t);
+        int changes = 0, previous = signOf(above);
+        countSign(v, changes, previous);
         for (int k = last - 1; k >= 1; --k) {
             const double q =
                 qDegree_[k] == 1 ? q_[k][0] + q_[k][1] * t : polynomialValue(q_[k], qDegree_[k], t);
-            v[k - 1] = q * v[k] - s_[k + 1] * v[k + 1];
+            const double below = q * v - s_[k + 1] * above;
+            countSign(below, changes, previous);
+            above = v;
+            v = below;
         }
-        return countSignChanges(v, size_);
+        return changes;
     }
 
     /** The same by evaluating every member on its own (for tests of the recurrence). */
@@ -156,16 +161,23 @@ private:
     /** Sign changes along v[0..n), zeros skipped (Sturm's theorem counts them so). */
     static int countSignChanges(const double* v, int n)
     {
-        // Branch-free: the signs along a sequence follow no pattern the branch predictor could
-        // learn. `previous` is the sign of the last nonzero member (-1 or +1), 0 before the first;
-        // a zero member leaves it unchanged, and a NaN counts as positive, as v < 0 is false.
         int changes = 0, previous = 0;
-        for (int k = 0; k < n; ++k) {
-            const int sign = v[k] == 0.0 ? 0 : (v[k] < 0.0 ? -1 : 1);
-            changes += sign * previous < 0;
-            previous = sign != 0 ? sign : previous;
-        }
+        for (int k = 0; k < n; ++k)
+            countSign(v[k], changes, previous);
         return changes;
+    }
+
+    /** -1, 0 or +1; a NaN counts as positive, as x < 0 is false. */
+    static int signOf(double x) { return x == 0.0 ? 0 : (x < 0.0 ? -1 : 1); }
+
+    /** One member of a count of sign changes, branch-free (the signs along a sequence follow no
+    pattern the branch predictor could learn): `previous` is the sign of the last nonzero member,
+    0 before the first; a zero member leaves it unchanged. */
+    static void countSign(double x, int& changes, int& previous)
+    {
+        const int sign = signOf(x);
+        changes += sign * previous < 0;
+        previous = sign != 0 ? sign : previous;
     }
 
     static double maxAbs(const double* c, int n)
@@ -190,8 +202,8 @@ private:
     }
 
     double p_[11][11];
-    double q_[11][11]; //!< q_[k]: the quotient of p(k-1) by p(k)
-    double s_[11];     //!< s_[k]: the scale of the remainder that became p(k), k >= 2
+    double q_[11][11];   //!< q_[k]: the quotient of p(k-1) by p(k)
+    double s_[11];       //!< s_[k]: the scale of the remainder that became p(k), k >= 2
     double largest_[11]; //!< max |coefficient| of p(k), kept so that a division need not seek it
     int degree_[11];
     int qDegree_[11];

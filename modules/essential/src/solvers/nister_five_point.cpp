@@ -63,7 +63,7 @@ ESSENTIAL_INLINE_INTO_CLONES void multiply(const double* a, int na, const double
 end away from zero at 1/4) when the bracket spans more than a factor of four on one side of zero.
 The roots of d(z) are spread like ratios of matrix entries, most of them of order 1, so splitting
 [0, 100] at 5 rather than 50 finds them with fewer evaluations. */
-inline double splitPoint(double a, double b)
+ESSENTIAL_INLINE_INTO_CLONES double splitPoint(double a, double b)
 {
     if (a >= 0.0) {
         const double lo = std::max(a, 0.25);
@@ -81,8 +81,8 @@ the current bracket and at least halves the step before last, a bisection step o
 bracket shrinks on every evaluation. Stops after a step smaller than tolerance * max(1, |z|) (a
 Newton step that small leaves an error of the order of its square) or after maxIterations. Returns
 the last iterate; `iterations` receives the number of iterations used. */
-double polishRoot(const double* d, int n, double lo, double hi, int maxIterations, double tolerance,
-                  int& iterations)
+ESSENTIAL_INLINE_INTO_CLONES double polishRoot(const double* d, int n, double lo, double hi,
+                                               int maxIterations, double tolerance, int& iterations)
 {
     double z = 0.5 * (lo + hi);
     double step = std::abs(hi - lo), stepBefore = step;
@@ -311,6 +311,155 @@ ESSENTIAL_AVX2_CLONES bool prepareFrame(const double R1[3][3], const double R2[3
     return true;
 }
 
+/** The real roots of w's d(z) in [-bound, bound], ascending (at most 10): in the AVX2 clone too,
+for the three-operand forms of its scalar arithmetic. */
+ESSENTIAL_AVX2_CLONES int realRoots(const FrameWork& w, const NisterSettings& settings,
+                                    double bound, double* roots,
+                                    NisterFivePointSolver::Diagnostics& diagnostics)
+{
+    // Root bracketing with the Sturm sequence on [-maxAbsRoot, maxAbsRoot] only (roots outside are
+    // abandoned), splitting until each bracket holds one root; brackets that still hold several
+    // roots when narrower than minBracketWidth are abandoned (near-repeated roots).
+    struct Bracket
+    {
+        double a, b;
+        int va, vb;
+    };
+    constexpr int kMaxBrackets = 64;
+    Bracket stack[kMaxBrackets];
+    const double* d = w.d;
+    const int degree = w.degree;
+    int numRoots = 0;
+    stack[0] = {-bound, bound, w.vLow, w.vHigh};
+    int top = 1;
+    while (top > 0) {
+        const Bracket br = stack[--top];
+        const int count = br.va - br.vb;
+        if (count <= 0) continue;
+        if (count > 1) {
+            if (br.b - br.a < settings.minBracketWidth || top + 2 > kMaxBrackets) {
+                diagnostics.abandonedRepeated += count;
+                continue;
+            }
+            const double mid = splitPoint(br.a, br.b);
+            const int vm = w.sturm.signChanges(mid);
+            ++diagnostics.sturmEvaluations;
+            stack[top++] = {mid, br.b, vm, br.vb}; // the right half below: roots come out in order
+            stack[top++] = {br.a, mid, br.va, vm};
+            continue;
+        }
+        // One root: narrow the bracket on the sign of d alone (one Horner evaluation per step)
+        // until it is narrow relative to the root, then polish.
+        double a = br.a, b = br.b;
+        double fa = polynomialValue(d, degree, a);
+        const double fb = polynomialValue(d, degree, b);
+        if (fb == 0.0 || fa == 0.0 || (fa < 0.0) == (fb < 0.0)) {
+            ++diagnostics.noSignChange; // a root on the edge, or the count is off by rounding
+            continue;
+        }
+        while (b - a >
+               settings.polishBracketWidth * std::max(1.0, std::min(std::abs(a), std::abs(b)))) {
+            const double m = splitPoint(a, b);
+            const double fm = polynomialValue(d, degree, m);
+            ++diagnostics.bracketEvaluations;
+            if (fm == 0.0) {
+                a = b = m;
+                break;
+            }
+            // Selects, not a branch: the side of the root is a coin toss to the predictor.
+            const bool sameSideAsA = (fm < 0.0) == (fa < 0.0);
+            a = sameSideAsA ? m : a;
+            fa = sameSideAsA ? fm : fa;
+            b = sameSideAsA ? b : m;
+        }
+        double z = a;
+        if (a != b) {
+            int iterations = 0;
+            z = fa < 0.0 ? polishRoot(d, degree, a, b, settings.maxPolishIterations,
+                                      settings.polishTolerance, iterations)
+                         : polishRoot(d, degree, b, a, settings.maxPolishIterations,
+                                      settings.polishTolerance, iterations);
+            diagnostics.polishIterations += iterations;
+        }
+        double magnitude = 0.0, power = 1.0;
+        for (int i = 0; i <= degree; ++i, power *= std::abs(z))
+            magnitude += std::abs(d[i]) * power;
+        if (std::abs(polynomialValue(d, degree, z)) <= settings.maxRelativeResidual * magnitude &&
+            numRoots < 10)
+            roots[numRoots++] = z;
+        else
+            ++diagnostics.rejectedResidual;
+    }
+    return numRoots;
+}
+
+/** The essential matrices of the roots of w's d(z), in camera coordinates (R1, R2: the frame's
+rotations); roots whose matrix fails the trace constraint by more than maxResidual are dropped. */
+ESSENTIAL_AVX2_CLONES int essentialMatrices(const FrameWork& w, const double R1[3][3],
+                                            const double R2[3][3], const double* roots,
+                                            int numRoots, double maxResidual, Matx33d* solutions,
+                                            NisterFivePointSolver::Diagnostics& diagnostics)
+{
+    // x and y from the null vector of C(z): the cross product of two of its rows (the pair with
+    // the largest product, which is the best conditioned); then E' and E = R2^T E' R1 in camera
+    // coordinates, scaled to Frobenius norm sqrt(2) like [t]x R.
+    int numSolutions = 0;
+    for (int s = 0; s < numRoots; ++s) {
+        const double z = roots[s];
+        double row[3][3];
+        for (int r = 0; r < 3; ++r) {
+            row[r][0] = polynomialValue(w.C[r][0], 3, z);
+            row[r][1] = polynomialValue(w.C[r][1], 3, z);
+            row[r][2] = polynomialValue(w.C[r][2], 4, z);
+        }
+        double v[3] = {0, 0, 0}, vNorm2 = -1.0;
+        for (int pair = 0; pair < 3; ++pair) {
+            const double* p = row[pair];
+            const double* q = row[(pair + 1) % 3];
+            const double c[3] = {p[1] * q[2] - p[2] * q[1], p[2] * q[0] - p[0] * q[2],
+                                 p[0] * q[1] - p[1] * q[0]};
+            const double n2 = c[0] * c[0] + c[1] * c[1] + c[2] * c[2];
+            if (n2 > vNorm2) {
+                vNorm2 = n2;
+                std::copy(c, c + 3, v);
+            }
+        }
+        if (!(std::abs(v[2]) > 1e-14 * std::sqrt(vNorm2))) continue;
+        const double x = v[0] / v[2], y = v[1] / v[2];
+        double Ep[3][3];
+        for (int i = 0; i < 5; ++i)
+            Ep[i / 3][i % 3] = w.A[i][0] * x + w.A[i][1] * y + w.A[i][2] * z + w.A[i][3];
+        Ep[1][2] = -x;
+        Ep[2][0] = -y;
+        Ep[2][1] = -z;
+        Ep[2][2] = -1.0;
+        double T[3][3]; // E' R1
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j)
+                T[i][j] = Ep[i][0] * R1[0][j] + Ep[i][1] * R1[1][j] + Ep[i][2] * R1[2][j];
+        Matx33d& E = solutions[numSolutions];
+        double n2 = 0.0;
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) {
+                E(i, j) = R2[0][i] * T[0][j] + R2[1][i] * T[1][j] + R2[2][i] * T[2][j];
+                n2 += E(i, j) * E(i, j);
+            }
+        if (!(n2 > 0.0) || !std::isfinite(n2)) continue;
+        const double scale = std::sqrt(2.0 / n2);
+        for (int i = 0; i < 9; ++i)
+            E.val[i] *= scale;
+        // A genuine root gives an essential matrix: 2 E E^T E - trace(E E^T) E = 0.
+        const Matx33d EEt = E * E.t();
+        const double residual = norm(2.0 * EEt * E - trace(EEt) * E);
+        if (!(residual <= maxResidual)) {
+            ++diagnostics.rejectedNotEssential;
+            continue;
+        }
+        ++numSolutions;
+    }
+    return numSolutions;
+}
+
 } // namespace
 
 NisterFivePointSolver::NisterFivePointSolver(const NisterSettings& settings) : settings_(settings)
@@ -369,146 +518,17 @@ int NisterFivePointSolver::solve(const Point2d* x1, const Point2d* x2, RNG& /*rn
     if (best < 0) return 0;
     const FrameWork& w = work[best];
     const double* d = w.d;
-    const int degree = w.degree;
     diagnostics_.frame = frame;
     diagnostics_.condition = w.condition;
     diagnostics_.rootsOutside = w.outside;
     diagnostics_.realRootsInRange = std::max(0, w.vLow - w.vHigh);
     std::copy(d, d + 11, diagnostics_.polynomial);
 
-    // Root bracketing with the Sturm sequence on [-maxAbsRoot, maxAbsRoot] only (roots outside are
-    // abandoned), splitting until each bracket holds one root; brackets that still hold several
-    // roots when narrower than minBracketWidth are abandoned (near-repeated roots).
-    struct Bracket
-    {
-        double a, b;
-        int va, vb;
-    };
-    constexpr int kMaxBrackets = 64;
-    Bracket stack[kMaxBrackets];
     double roots[10];
-    int numRoots = 0;
-    stack[0] = {-bound, bound, w.vLow, w.vHigh};
-    int top = 1;
-    while (top > 0) {
-        const Bracket br = stack[--top];
-        const int count = br.va - br.vb;
-        if (count <= 0) continue;
-        if (count > 1) {
-            if (br.b - br.a < settings_.minBracketWidth || top + 2 > kMaxBrackets) {
-                diagnostics_.abandonedRepeated += count;
-                continue;
-            }
-            const double mid = splitPoint(br.a, br.b);
-            const int vm = w.sturm.signChanges(mid);
-            ++diagnostics_.sturmEvaluations;
-            stack[top++] = {mid, br.b, vm, br.vb}; // the right half below: roots come out in order
-            stack[top++] = {br.a, mid, br.va, vm};
-            continue;
-        }
-        // One root: narrow the bracket on the sign of d alone (one Horner evaluation per step)
-        // until it is narrow relative to the root, then polish.
-        double a = br.a, b = br.b;
-        double fa = polynomialValue(d, degree, a);
-        const double fb = polynomialValue(d, degree, b);
-        if (fb == 0.0 || fa == 0.0 || (fa < 0.0) == (fb < 0.0)) {
-            ++diagnostics_.noSignChange; // a root on the edge, or the count is off by rounding
-            continue;
-        }
-        while (b - a >
-               settings_.polishBracketWidth * std::max(1.0, std::min(std::abs(a), std::abs(b)))) {
-            const double m = splitPoint(a, b);
-            const double fm = polynomialValue(d, degree, m);
-            ++diagnostics_.bracketEvaluations;
-            if (fm == 0.0) {
-                a = b = m;
-                break;
-            }
-            // Selects, not a branch: the side of the root is a coin toss to the predictor.
-            const bool sameSideAsA = (fm < 0.0) == (fa < 0.0);
-            a = sameSideAsA ? m : a;
-            fa = sameSideAsA ? fm : fa;
-            b = sameSideAsA ? b : m;
-        }
-        double z = a;
-        if (a != b) {
-            int iterations = 0;
-            z = fa < 0.0 ? polishRoot(d, degree, a, b, settings_.maxPolishIterations,
-                                      settings_.polishTolerance, iterations)
-                         : polishRoot(d, degree, b, a, settings_.maxPolishIterations,
-                                      settings_.polishTolerance, iterations);
-            diagnostics_.polishIterations += iterations;
-        }
-        double magnitude = 0.0, power = 1.0;
-        for (int i = 0; i <= degree; ++i, power *= std::abs(z))
-            magnitude += std::abs(d[i]) * power;
-        if (std::abs(polynomialValue(d, degree, z)) <= settings_.maxRelativeResidual * magnitude &&
-            numRoots < 10)
-            roots[numRoots++] = z;
-        else
-            ++diagnostics_.rejectedResidual;
-    }
+    const int numRoots = realRoots(w, settings_, bound, roots, diagnostics_);
 
-    // x and y from the null vector of C(z): the cross product of two of its rows (the pair with
-    // the largest product, which is the best conditioned); then E' and E = R2^T E' R1 in camera
-    // coordinates, scaled to Frobenius norm sqrt(2) like [t]x R.
-    const double(*R1)[3] = frames_[frame][0];
-    const double(*R2)[3] = frames_[frame][1];
-    int numSolutions = 0;
-    for (int s = 0; s < numRoots; ++s) {
-        const double z = roots[s];
-        double row[3][3];
-        for (int r = 0; r < 3; ++r) {
-            row[r][0] = polynomialValue(w.C[r][0], 3, z);
-            row[r][1] = polynomialValue(w.C[r][1], 3, z);
-            row[r][2] = polynomialValue(w.C[r][2], 4, z);
-        }
-        double v[3] = {0, 0, 0}, vNorm2 = -1.0;
-        for (int pair = 0; pair < 3; ++pair) {
-            const double* p = row[pair];
-            const double* q = row[(pair + 1) % 3];
-            const double c[3] = {p[1] * q[2] - p[2] * q[1], p[2] * q[0] - p[0] * q[2],
-                                 p[0] * q[1] - p[1] * q[0]};
-            const double n2 = c[0] * c[0] + c[1] * c[1] + c[2] * c[2];
-            if (n2 > vNorm2) {
-                vNorm2 = n2;
-                std::copy(c, c + 3, v);
-            }
-        }
-        if (!(std::abs(v[2]) > 1e-14 * std::sqrt(vNorm2))) continue;
-        const double x = v[0] / v[2], y = v[1] / v[2];
-        double Ep[3][3];
-        for (int i = 0; i < 5; ++i)
-            Ep[i / 3][i % 3] = w.A[i][0] * x + w.A[i][1] * y + w.A[i][2] * z + w.A[i][3];
-        Ep[1][2] = -x;
-        Ep[2][0] = -y;
-        Ep[2][1] = -z;
-        Ep[2][2] = -1.0;
-        double T[3][3]; // E' R1
-        for (int i = 0; i < 3; ++i)
-            for (int j = 0; j < 3; ++j)
-                T[i][j] = Ep[i][0] * R1[0][j] + Ep[i][1] * R1[1][j] + Ep[i][2] * R1[2][j];
-        Matx33d& E = solutions[numSolutions];
-        double n2 = 0.0;
-        for (int i = 0; i < 3; ++i)
-            for (int j = 0; j < 3; ++j) {
-                E(i, j) = R2[0][i] * T[0][j] + R2[1][i] * T[1][j] + R2[2][i] * T[2][j];
-                n2 += E(i, j) * E(i, j);
-            }
-        if (!(n2 > 0.0) || !std::isfinite(n2)) continue;
-        const double scale = std::sqrt(2.0 / n2);
-        for (int i = 0; i < 9; ++i)
-            E.val[i] *= scale;
-        // A genuine root gives an essential matrix: 2 E E^T E - trace(E E^T) E = 0.
-        const Matx33d EEt = E * E.t();
-        const double residual = norm(2.0 * EEt * E - trace(EEt) * E);
-        if (!(residual <= settings_.maxEssentialResidual)) {
-            ++diagnostics_.rejectedNotEssential;
-            continue;
-        }
-        ++numSolutions;
-    }
-    return numSolutions;
+    return essentialMatrices(w, frames_[frame][0], frames_[frame][1], roots, numRoots,
+                             settings_.maxEssentialResidual, solutions, diagnostics_);
 }
 
 } // namespace solvers

@@ -7,6 +7,8 @@
 #ifndef OPENCV_ESSENTIAL_SOLVERS_STURM_SEQUENCE_HPP
 #define OPENCV_ESSENTIAL_SOLVERS_STURM_SEQUENCE_HPP
 
+#include "simd_dispatch.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -26,7 +28,7 @@ template <int N> inline double polynomialValueOfDegree(const double* c, double t
 
 /** c[0] + c[1] t + ... + c[n] t^n by Horner's rule. The five-point solver's d(z) is of degree 10
 but for degenerate samples, so that degree takes the loop-free path (the same operations). */
-inline double polynomialValue(const double* c, int n, double t)
+ESSENTIAL_INLINE_INTO_CLONES double polynomialValue(const double* c, int n, double t)
 {
     if (n == 10) return polynomialValueOfDegree<10>(c, t);
     double v = c[n];
@@ -37,7 +39,7 @@ inline double polynomialValue(const double* c, int n, double t)
 }
 
 /** d(t) and d'(t) together by Horner's rule. */
-inline void polynomialValueAndDerivative(const double* c, int n, double t, double& f, double& df)
+ESSENTIAL_INLINE_INTO_CLONES void polynomialValueAndDerivative(const double* c, int n, double t, double& f, double& df)
 {
     if (n == 10) {
         f = c[10];
@@ -116,7 +118,7 @@ public:
     }
 
     /** Sign changes of the sequence at t (zeros skipped). */
-    int signChanges(double t) const
+    ESSENTIAL_INLINE_INTO_CLONES int signChanges(double t) const
     {
         // The changes are counted from the last member up, as the recurrence produces them (the
         // count of a sequence read backwards is the same).
@@ -168,12 +170,12 @@ private:
     }
 
     /** -1, 0 or +1; a NaN counts as positive, as x < 0 is false. */
-    static int signOf(double x) { return x == 0.0 ? 0 : (x < 0.0 ? -1 : 1); }
+    ESSENTIAL_INLINE_INTO_CLONES static int signOf(double x) { return x == 0.0 ? 0 : (x < 0.0 ? -1 : 1); }
 
     /** One member of a count of sign changes, branch-free (the signs along a sequence follow no
     pattern the branch predictor could learn): `previous` is the sign of the last nonzero member,
     0 before the first; a zero member leaves it unchanged. */
-    static void countSign(double x, int& changes, int& previous)
+    ESSENTIAL_INLINE_INTO_CLONES static void countSign(double x, int& changes, int& previous)
     {
         const int sign = signOf(x);
         changes += sign * previous < 0;

@@ -39,7 +39,8 @@ ESSENTIAL_INLINE_INTO_CLONES double polynomialValue(const double* c, int n, doub
 }
 
 /** d(t) and d'(t) together by Horner's rule. */
-ESSENTIAL_INLINE_INTO_CLONES void polynomialValueAndDerivative(const double* c, int n, double t, double& f, double& df)
+ESSENTIAL_INLINE_INTO_CLONES void polynomialValueAndDerivative(const double* c, int n, double t,
+                                                               double& f, double& df)
 {
     if (n == 10) {
         f = c[10];
@@ -170,7 +171,10 @@ private:
     }
 
     /** -1, 0 or +1; a NaN counts as positive, as x < 0 is false. */
-    ESSENTIAL_INLINE_INTO_CLONES static int signOf(double x) { return x == 0.0 ? 0 : (x < 0.0 ? -1 : 1); }
+    ESSENTIAL_INLINE_INTO_CLONES static int signOf(double x)
+    {
+        return x == 0.0 ? 0 : (x < 0.0 ? -1 : 1);
+    }
 
     /** One member of a count of sign changes, branch-free (the signs along a sequence follow no
     pattern the branch predictor could learn): `previous` is the sign of the last nonzero member,

@@ -15,8 +15,10 @@
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__) &&       \
     !defined(__AVX2__) && !defined(ESSENTIAL_NO_CLONES)
 #define ESSENTIAL_AVX2_CLONES __attribute__((target_clones("avx2", "default")))
+#define ESSENTIAL_HAS_CLONES 1
 #else
 #define ESSENTIAL_AVX2_CLONES
+#define ESSENTIAL_HAS_CLONES 0
 #endif
 
 /** For a loop in a header that a marked function calls: GCC does not inline a function into a

@@ -111,6 +111,197 @@ ESSENTIAL_INLINE_INTO_CLONES double polishRoot(const double* d, int n, double lo
     return z;
 }
 
+#if defined(__GNUC__) && !defined(__clang__)
+#define ESSENTIAL_ROOT_LANES 1
+// Every function below is inlined (ESSENTIAL_INLINE_INTO_CLONES), so that passing 32-byte vectors
+// by value in the default clone, which GCC warns about as an ABI change, never reaches an ABI. The
+// warning stays off to the end of the file: GCC reports it where it emits the clones, at the end.
+#pragma GCC diagnostic ignored "-Wpsabi"
+/** Roots narrowed and polished side by side, four per vector: the root stage is a chain of
+dependent Horner evaluations (about 45 a call), each waiting for the sign of the last, one root
+after another; the roots of one d(z) are independent, so four advance together, lane l of every
+vector through exactly the operations root l would take alone (IEEE operations lane by lane, selects
+where the scalar code branched, a finished lane carried along unchanged): the same bits, a quarter
+of the chains. GCC's vector extension (one AVX2 or two SSE2 instructions per operation). */
+typedef double RootLanes __attribute__((vector_size(4 * sizeof(double))));
+typedef long long LaneMask __attribute__((vector_size(4 * sizeof(double))));
+constexpr int kRootLanes = 4;
+
+/** c in every lane: c - 0 is c exactly (-0 included), and GCC broadcasts the scalar operand. */
+ESSENTIAL_INLINE_INTO_CLONES RootLanes laneBroadcast(double c)
+{
+    return c - RootLanes{};
+}
+
+ESSENTIAL_INLINE_INTO_CLONES RootLanes laneAbs(RootLanes x)
+{
+    return (RootLanes)((LaneMask)x & 0x7fffffffffffffffLL);
+}
+
+/** std::max(c, x) and std::min(x, y) lane by lane: (c < x) ? x : c and (y < x) ? y : x. */
+ESSENTIAL_INLINE_INTO_CLONES RootLanes laneMax(double c, RootLanes x)
+{
+    const RootLanes cv = laneBroadcast(c);
+    return cv < x ? x : cv;
+}
+ESSENTIAL_INLINE_INTO_CLONES RootLanes laneMin(RootLanes x, RootLanes y)
+{
+    return y < x ? y : x;
+}
+
+ESSENTIAL_INLINE_INTO_CLONES bool anyLane(LaneMask m)
+{
+    return (m[0] | m[1] | m[2] | m[3]) != 0;
+}
+ESSENTIAL_INLINE_INTO_CLONES int countLanes(LaneMask m)
+{
+    return static_cast<int>(-(m[0] + m[1] + m[2] + m[3]));
+}
+
+/** d at t, lane by lane, by Horner's rule (degree 10 without a loop, as polynomialValue); c holds
+d's coefficients, each in every lane. */
+ESSENTIAL_INLINE_INTO_CLONES RootLanes laneValues(const RootLanes* c, int n, RootLanes t)
+{
+    RootLanes v = c[n];
+    if (n == 10) {
+#pragma GCC unroll 10
+        for (int i = 9; i >= 0; --i)
+            v = v * t + c[i];
+        return v;
+    }
+    for (int i = n - 1; i >= 0; --i)
+        v = v * t + c[i];
+    return v;
+}
+
+/** d and d' at t, lane by lane, as polynomialValueAndDerivative. */
+ESSENTIAL_INLINE_INTO_CLONES void laneValuesAndDerivatives(const RootLanes* c, int n, RootLanes t,
+                                                           RootLanes& f, RootLanes& df)
+{
+    f = c[n];
+    df = laneBroadcast(0.0);
+    if (n == 10) {
+#pragma GCC unroll 10
+        for (int i = 9; i >= 0; --i) {
+            df = df * t + f;
+            f = f * t + c[i];
+        }
+        return;
+    }
+    for (int i = n - 1; i >= 0; --i) {
+        df = df * t + f;
+        f = f * t + c[i];
+    }
+}
+
+/** splitPoint lane by lane (its square roots taken one lane at a time, where a lane needs one). */
+ESSENTIAL_INLINE_INTO_CLONES RootLanes laneSplitPoints(RootLanes a, RootLanes b)
+{
+    const LaneMask positive = a >= 0.0;
+    const LaneMask negative = ~positive & (b <= 0.0);
+    const RootLanes loP = a < 0.25 ? laneBroadcast(0.25) : a;   // std::max(a, 0.25)
+    const RootLanes loN = -b < 0.25 ? laneBroadcast(0.25) : -b; // std::max(-b, 0.25)
+    const LaneMask geometricP = positive & (b > 4.0 * loP);
+    const LaneMask geometricN = negative & (-a > 4.0 * loN);
+    RootLanes m = 0.5 * (a + b);
+    if (anyLane(geometricP | geometricN)) {
+        const RootLanes product = geometricP ? loP * b : loN * -a;
+        for (int l = 0; l < kRootLanes; ++l)
+            if (geometricP[l] | geometricN[l]) {
+                const double root = std::sqrt(product[l]);
+                m[l] = geometricP[l] ? root : -root;
+            }
+    }
+    return m;
+}
+
+/** The single-root brackets [a0[l], b0[l]] of one group (lanes l < count; the others idle):
+narrowed on the sign of d alone until each is narrow relative to its root, then polished by the
+hybrid Newton-Raphson / bisection of Numerical Recipes' safe Newton scheme (a Newton step when it
+stays inside the bracket and at least halves the step before last, a bisection step otherwise; the
+bracket shrinks on every evaluation; stop after a step smaller than polishTolerance * max(1, |z|),
+a Newton step that small leaving an error of the order of its square, or after
+maxPolishIterations). z[l] receives each root; ok[l] is false for a bracket without a sign change
+(a root on the edge, or the Sturm count off by rounding). */
+ESSENTIAL_INLINE_INTO_CLONES void narrowAndPolish(const double* d, int n,
+                                                  const NisterSettings& settings, const double* a0,
+                                                  const double* b0, int count, double* zOut,
+                                                  bool* ok,
+                                                  NisterFivePointSolver::Diagnostics& diagnostics)
+{
+    RootLanes c[11];
+    for (int i = 0; i <= n; ++i)
+        c[i] = laneBroadcast(d[i]);
+    // Idle lanes repeat lane 0's bracket.
+    const int i1 = count > 1 ? 1 : 0, i2 = count > 2 ? 2 : 0, i3 = count > 3 ? 3 : 0;
+    RootLanes a = {a0[0], a0[i1], a0[i2], a0[i3]};
+    RootLanes b = {b0[0], b0[i1], b0[i2], b0[i3]};
+    const LaneMask used = {-1, count > 1 ? -1 : 0, count > 2 ? -1 : 0, count > 3 ? -1 : 0};
+    RootLanes fa = laneValues(c, n, a);
+    const RootLanes fb = laneValues(c, n, b);
+    const LaneMask signChange = used & (fb != 0.0) & (fa != 0.0) & ((fa < 0.0) ^ (fb < 0.0));
+    LaneMask live = signChange;
+
+    // Narrowing: one Horner evaluation per step and lane.
+    const double width = settings.polishBracketWidth;
+    for (;;) {
+        live &= b - a > width * laneMax(1.0, laneMin(laneAbs(a), laneAbs(b)));
+        if (!anyLane(live)) break;
+        diagnostics.bracketEvaluations += countLanes(live);
+        const RootLanes m = laneSplitPoints(a, b);
+        const RootLanes fm = laneValues(c, n, m);
+        const LaneMask onRoot = live & (fm == 0.0);
+        const LaneMask sameSideAsA = ~((fm < 0.0) ^ (fa < 0.0));
+        const LaneMask moveA = live & (onRoot | sameSideAsA);
+        const LaneMask moveB = live & (onRoot | ~sameSideAsA);
+        a = moveA ? m : a;
+        fa = moveA & ~onRoot ? fm : fa;
+        b = moveB ? m : b;
+        live &= ~onRoot;
+    }
+
+    // Polish from the bracket [lo, hi] with d(lo) < 0 < d(hi) (lo may be above hi).
+    const LaneMask aBelow = fa < 0.0;
+    RootLanes lo = aBelow ? a : b, hi = aBelow ? b : a;
+    const LaneMask narrowed = a == b;
+    RootLanes z = narrowed ? a : 0.5 * (lo + hi);
+    RootLanes step = laneAbs(hi - lo), stepBefore = step;
+    live = signChange & ~narrowed;
+    LaneMask iterations = live & 0;
+    RootLanes f, df;
+    laneValuesAndDerivatives(c, n, z, f, df);
+    const long long maxIterations = settings.maxPolishIterations;
+    const double tolerance = settings.polishTolerance;
+    for (;;) {
+        live &= (iterations < maxIterations) & (f != 0.0);
+        if (!anyLane(live)) break;
+        const LaneMask slope = df != 0.0;
+        const RootLanes newton = slope ? z - f / df : z;
+        const LaneMask inside = slope & ((newton - lo) * (newton - hi) < 0.0);
+        const LaneMask takeNewton = inside & (laneAbs(2.0 * f) < laneAbs(stepBefore * df));
+        const RootLanes newStep = takeNewton ? laneAbs(newton - z) : 0.5 * laneAbs(hi - lo);
+        const RootLanes newZ = takeNewton ? newton : 0.5 * (lo + hi);
+        iterations -= live;
+        stepBefore = live ? step : stepBefore;
+        step = live ? newStep : step;
+        z = live ? newZ : z;
+        live &= ~(newStep <= tolerance * laneMax(1.0, laneAbs(newZ)));
+        RootLanes fz, dfz;
+        laneValuesAndDerivatives(c, n, z, fz, dfz);
+        f = live ? fz : f;
+        df = live ? dfz : df;
+        const LaneMask below = fz < 0.0;
+        lo = live & below ? z : lo;
+        hi = live & ~below ? z : hi;
+    }
+    for (int l = 0; l < count; ++l) {
+        zOut[l] = z[l];
+        ok[l] = signChange[l] != 0;
+        diagnostics.polishIterations += static_cast<int>(iterations[l]);
+    }
+}
+#endif
+
 /** [I | A], the Gauss-Jordan form of the 5 x 9 epipolar constraint matrix of the sample in the
 coordinates q1' = R1 q1, q2' = R2 q2; false for a degenerate sample. */
 ESSENTIAL_INLINE_INTO_CLONES bool nullSpace(const double R1[3][3], const double R2[3][3],
@@ -311,15 +502,34 @@ ESSENTIAL_AVX2_CLONES bool prepareFrame(const double R1[3][3], const double R2[3
     return true;
 }
 
-/** The real roots of w's d(z) in [-bound, bound], ascending (at most 10): in the AVX2 clone too,
-for the three-operand forms of its scalar arithmetic. */
-ESSENTIAL_AVX2_CLONES int realRoots(const FrameWork& w, const NisterSettings& settings,
-                                    double bound, double* roots,
-                                    NisterFivePointSolver::Diagnostics& diagnostics)
+/** Keeps the polished root z unless |d(z)| stays far from zero (maxRelativeResidual of the sum of
+the terms' magnitudes), or ten are kept already. */
+ESSENTIAL_INLINE_INTO_CLONES void acceptRoot(const double* d, int degree,
+                                             const NisterSettings& settings, double z,
+                                             double* roots, int& numRoots,
+                                             NisterFivePointSolver::Diagnostics& diagnostics)
 {
-    // Root bracketing with the Sturm sequence on [-maxAbsRoot, maxAbsRoot] only (roots outside are
-    // abandoned), splitting until each bracket holds one root; brackets that still hold several
-    // roots when narrower than minBracketWidth are abandoned (near-repeated roots).
+    double magnitude = 0.0, power = 1.0;
+    for (int i = 0; i <= degree; ++i, power *= std::abs(z))
+        magnitude += std::abs(d[i]) * power;
+    if (std::abs(polynomialValue(d, degree, z)) <= settings.maxRelativeResidual * magnitude &&
+        numRoots < 10)
+        roots[numRoots++] = z;
+    else
+        ++diagnostics.rejectedResidual;
+}
+
+/** At most 10 roots, but Sturm counts off by rounding could split more single-root brackets. */
+constexpr int kMaxSingles = 64;
+
+/** Root bracketing with the Sturm sequence on [-bound, bound] only (roots outside are abandoned),
+splitting until each bracket holds one root; brackets that still hold several roots when narrower
+than minBracketWidth are abandoned (near-repeated roots). The single-root brackets, ascending, go
+to singleA / singleB; returns their number. */
+ESSENTIAL_INLINE_INTO_CLONES int isolateRoots(const FrameWork& w, const NisterSettings& settings,
+                                              double bound, double* singleA, double* singleB,
+                                              NisterFivePointSolver::Diagnostics& diagnostics)
+{
     struct Bracket
     {
         double a, b;
@@ -327,9 +537,7 @@ ESSENTIAL_AVX2_CLONES int realRoots(const FrameWork& w, const NisterSettings& se
     };
     constexpr int kMaxBrackets = 64;
     Bracket stack[kMaxBrackets];
-    const double* d = w.d;
-    const int degree = w.degree;
-    int numRoots = 0;
+    int numSingles = 0;
     stack[0] = {-bound, bound, w.vLow, w.vHigh};
     int top = 1;
     while (top > 0) {
@@ -348,50 +556,121 @@ ESSENTIAL_AVX2_CLONES int realRoots(const FrameWork& w, const NisterSettings& se
             stack[top++] = {br.a, mid, br.va, vm};
             continue;
         }
-        // One root: narrow the bracket on the sign of d alone (one Horner evaluation per step)
-        // until it is narrow relative to the root, then polish.
-        double a = br.a, b = br.b;
-        double fa = polynomialValue(d, degree, a);
-        const double fb = polynomialValue(d, degree, b);
-        if (fb == 0.0 || fa == 0.0 || (fa < 0.0) == (fb < 0.0)) {
-            ++diagnostics.noSignChange; // a root on the edge, or the count is off by rounding
-            continue;
+        if (numSingles < kMaxSingles) {
+            singleA[numSingles] = br.a;
+            singleB[numSingles++] = br.b;
         }
-        while (b - a >
-               settings.polishBracketWidth * std::max(1.0, std::min(std::abs(a), std::abs(b)))) {
-            const double m = splitPoint(a, b);
-            const double fm = polynomialValue(d, degree, m);
-            ++diagnostics.bracketEvaluations;
-            if (fm == 0.0) {
-                a = b = m;
-                break;
+    }
+    return numSingles;
+}
+
+/** The root in the single-root bracket [a, b], narrowed on the sign of d alone (one Horner
+evaluation per step) until the bracket is narrow relative to the root, then polished (polishRoot);
+false for a bracket without a sign change of d (a root on the edge, or the count off by rounding).
+*/
+ESSENTIAL_INLINE_INTO_CLONES bool
+narrowAndPolishOne(const double* d, int degree, const NisterSettings& settings, double a, double b,
+                   double& z, NisterFivePointSolver::Diagnostics& diagnostics)
+{
+    double fa = polynomialValue(d, degree, a);
+    const double fb = polynomialValue(d, degree, b);
+    if (fb == 0.0 || fa == 0.0 || (fa < 0.0) == (fb < 0.0)) return false;
+    while (b - a >
+           settings.polishBracketWidth * std::max(1.0, std::min(std::abs(a), std::abs(b)))) {
+        const double m = splitPoint(a, b);
+        const double fm = polynomialValue(d, degree, m);
+        ++diagnostics.bracketEvaluations;
+        if (fm == 0.0) {
+            a = b = m;
+            break;
+        }
+        // Selects, not a branch: the side of the root is a coin toss to the predictor.
+        const bool sameSideAsA = (fm < 0.0) == (fa < 0.0);
+        a = sameSideAsA ? m : a;
+        fa = sameSideAsA ? fm : fa;
+        b = sameSideAsA ? b : m;
+    }
+    z = a;
+    if (a != b) {
+        int iterations = 0;
+        z = fa < 0.0 ? polishRoot(d, degree, a, b, settings.maxPolishIterations,
+                                  settings.polishTolerance, iterations)
+                     : polishRoot(d, degree, b, a, settings.maxPolishIterations,
+                                  settings.polishTolerance, iterations);
+        diagnostics.polishIterations += iterations;
+    }
+    return true;
+}
+
+/** The real roots of w's d(z) in [-bound, bound], ascending (at most 10), the single-root brackets
+finished one after another (inLanes false) or four at a time in vector lanes (narrowAndPolish):
+the same roots either way. */
+ESSENTIAL_INLINE_INTO_CLONES int findRealRoots(const FrameWork& w, const NisterSettings& settings,
+                                               double bound, bool inLanes, double* roots,
+                                               NisterFivePointSolver::Diagnostics& diagnostics)
+{
+    double singleA[kMaxSingles], singleB[kMaxSingles];
+    const int numSingles = isolateRoots(w, settings, bound, singleA, singleB, diagnostics);
+    int numRoots = 0;
+#if ESSENTIAL_ROOT_LANES
+    if (inLanes) {
+        for (int g = 0; g < numSingles; g += kRootLanes) {
+            double z[kRootLanes];
+            bool ok[kRootLanes];
+            const int count = std::min(kRootLanes, numSingles - g);
+            narrowAndPolish(w.d, w.degree, settings, singleA + g, singleB + g, count, z, ok,
+                            diagnostics);
+            for (int l = 0; l < count; ++l) {
+                if (ok[l])
+                    acceptRoot(w.d, w.degree, settings, z[l], roots, numRoots, diagnostics);
+                else
+                    ++diagnostics.noSignChange;
             }
-            // Selects, not a branch: the side of the root is a coin toss to the predictor.
-            const bool sameSideAsA = (fm < 0.0) == (fa < 0.0);
-            a = sameSideAsA ? m : a;
-            fa = sameSideAsA ? fm : fa;
-            b = sameSideAsA ? b : m;
         }
-        double z = a;
-        if (a != b) {
-            int iterations = 0;
-            z = fa < 0.0 ? polishRoot(d, degree, a, b, settings.maxPolishIterations,
-                                      settings.polishTolerance, iterations)
-                         : polishRoot(d, degree, b, a, settings.maxPolishIterations,
-                                      settings.polishTolerance, iterations);
-            diagnostics.polishIterations += iterations;
-        }
-        double magnitude = 0.0, power = 1.0;
-        for (int i = 0; i <= degree; ++i, power *= std::abs(z))
-            magnitude += std::abs(d[i]) * power;
-        if (std::abs(polynomialValue(d, degree, z)) <= settings.maxRelativeResidual * magnitude &&
-            numRoots < 10)
-            roots[numRoots++] = z;
+        return numRoots;
+    }
+#else
+    (void)inLanes;
+#endif
+    for (int s = 0; s < numSingles; ++s) {
+        double z = 0.0;
+        if (narrowAndPolishOne(w.d, w.degree, settings, singleA[s], singleB[s], z, diagnostics))
+            acceptRoot(w.d, w.degree, settings, z, roots, numRoots, diagnostics);
         else
-            ++diagnostics.rejectedResidual;
+            ++diagnostics.noSignChange;
     }
     return numRoots;
 }
+
+// realRoots(w, settings, bound, roots, diagnostics): findRealRoots in vector lanes where four
+// doubles fill a register (AVX2), one root after another where two do (SSE2: measured 18% slower
+// per call in lanes, docs/SOLVERS.md). With clones, GCC's function multiversioning picks the
+// version on the running processor; without, the build's target decides.
+#if ESSENTIAL_ROOT_LANES && ESSENTIAL_HAS_CLONES
+__attribute__((target("avx2"))) int realRoots(const FrameWork& w, const NisterSettings& settings,
+                                              double bound, double* roots,
+                                              NisterFivePointSolver::Diagnostics& diagnostics)
+{
+    return findRealRoots(w, settings, bound, true, roots, diagnostics);
+}
+__attribute__((target("default"))) int realRoots(const FrameWork& w, const NisterSettings& settings,
+                                                 double bound, double* roots,
+                                                 NisterFivePointSolver::Diagnostics& diagnostics)
+{
+    return findRealRoots(w, settings, bound, false, roots, diagnostics);
+}
+#else
+int realRoots(const FrameWork& w, const NisterSettings& settings, double bound, double* roots,
+              NisterFivePointSolver::Diagnostics& diagnostics)
+{
+#if defined(__AVX2__)
+    const bool inLanes = true;
+#else
+    const bool inLanes = false;
+#endif
+    return findRealRoots(w, settings, bound, inLanes, roots, diagnostics);
+}
+#endif
 
 /** The essential matrices of the roots of w's d(z), in camera coordinates (R1, R2: the frame's
 rotations); roots whose matrix fails the trace constraint by more than maxResidual are dropped. */

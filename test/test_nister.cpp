@@ -7,6 +7,7 @@
 // sample, the number of solutions against OpenCV's own five-point solver, and the whole estimate
 // with solver = "nister".
 
+#include "simd_dispatch.hpp" // ESSENTIAL_INLINE_INTO_CLONES, which nister_coefficients.inc uses
 #include "solvers/nister_five_point.hpp"
 #include "synthetic_scene.hpp"
 

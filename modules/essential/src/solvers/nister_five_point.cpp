@@ -1,6 +1,14 @@
 // This file is part of opencv_essential, licensed under the Apache License, Version 2.0.
 // See the LICENSE file at the top of the source tree.
 
+#if defined(__GNUC__) && !defined(__clang__)
+// The root lanes below pass 32-byte vectors by value between functions that are all inlined
+// (ESSENTIAL_INLINE_INTO_CLONES, sturm_sequence.hpp's Horner templates included), so the ABI change
+// GCC warns about in the default clone never reaches an ABI. The warning is off for the whole file:
+// GCC reports it at the templates' lines in the header and where it emits the clones, at the end.
+#pragma GCC diagnostic ignored "-Wpsabi"
+#endif
+
 #include "solvers/nister_five_point.hpp"
 
 #include "simd_dispatch.hpp"
@@ -113,10 +121,6 @@ ESSENTIAL_INLINE_INTO_CLONES double polishRoot(const double* d, int n, double lo
 
 #if defined(__GNUC__) && !defined(__clang__)
 #define ESSENTIAL_ROOT_LANES 1
-// Every function below is inlined (ESSENTIAL_INLINE_INTO_CLONES), so that passing 32-byte vectors
-// by value in the default clone, which GCC warns about as an ABI change, never reaches an ABI. The
-// warning stays off to the end of the file: GCC reports it where it emits the clones, at the end.
-#pragma GCC diagnostic ignored "-Wpsabi"
 /** Roots narrowed and polished side by side, four per vector: the root stage is a chain of
 dependent Horner evaluations (about 45 a call), each waiting for the sign of the last, one root
 after another; the roots of one d(z) are independent, so four advance together, lane l of every
@@ -158,61 +162,11 @@ ESSENTIAL_INLINE_INTO_CLONES int countLanes(LaneMask m)
     return static_cast<int>(-(m[0] + m[1] + m[2] + m[3]));
 }
 
-/** d at t, lane by lane, by Horner's rule (degree 10 without a loop, as polynomialValue); c holds
-d's coefficients, each in every lane. */
-ESSENTIAL_INLINE_INTO_CLONES RootLanes laneValues(const RootLanes* c, int n, RootLanes t)
-{
-    RootLanes v = c[n];
-    if (n == 10) {
-#pragma GCC unroll 10
-        for (int i = 9; i >= 0; --i)
-            v = v * t + c[i];
-        return v;
-    }
-    for (int i = n - 1; i >= 0; --i)
-        v = v * t + c[i];
-    return v;
-}
-
-/** d and d' at t, lane by lane, as polynomialValueAndDerivative. */
-ESSENTIAL_INLINE_INTO_CLONES void laneValuesAndDerivatives(const RootLanes* c, int n, RootLanes t,
-                                                           RootLanes& f, RootLanes& df)
-{
-    f = c[n];
-    df = laneBroadcast(0.0);
-    if (n == 10) {
-#pragma GCC unroll 10
-        for (int i = 9; i >= 0; --i) {
-            df = df * t + f;
-            f = f * t + c[i];
-        }
-        return;
-    }
-    for (int i = n - 1; i >= 0; --i) {
-        df = df * t + f;
-        f = f * t + c[i];
-    }
-}
-
 /** splitPoint lane by lane (its square roots taken one lane at a time, where a lane needs one). */
 ESSENTIAL_INLINE_INTO_CLONES RootLanes laneSplitPoints(RootLanes a, RootLanes b)
 {
-    const LaneMask positive = a >= 0.0;
-    const LaneMask negative = ~positive & (b <= 0.0);
-    const RootLanes loP = a < 0.25 ? laneBroadcast(0.25) : a;   // std::max(a, 0.25)
-    const RootLanes loN = -b < 0.25 ? laneBroadcast(0.25) : -b; // std::max(-b, 0.25)
-    const LaneMask geometricP = positive & (b > 4.0 * loP);
-    const LaneMask geometricN = negative & (-a > 4.0 * loN);
-    RootLanes m = 0.5 * (a + b);
-    if (anyLane(geometricP | geometricN)) {
-        const RootLanes product = geometricP ? loP * b : loN * -a;
-        for (int l = 0; l < kRootLanes; ++l)
-            if (geometricP[l] | geometricN[l]) {
-                const double root = std::sqrt(product[l]);
-                m[l] = geometricP[l] ? root : -root;
-            }
-    }
-    return m;
+    return RootLanes{splitPoint(a[0], b[0]), splitPoint(a[1], b[1]), splitPoint(a[2], b[2]),
+                     splitPoint(a[3], b[3])};
 }
 
 /** The single-root brackets [a0[l], b0[l]] of one group (lanes l < count; the others idle):
@@ -237,8 +191,8 @@ ESSENTIAL_INLINE_INTO_CLONES void narrowAndPolish(const double* d, int n,
     RootLanes a = {a0[0], a0[i1], a0[i2], a0[i3]};
     RootLanes b = {b0[0], b0[i1], b0[i2], b0[i3]};
     const LaneMask used = {-1, count > 1 ? -1 : 0, count > 2 ? -1 : 0, count > 3 ? -1 : 0};
-    RootLanes fa = laneValues(c, n, a);
-    const RootLanes fb = laneValues(c, n, b);
+    RootLanes fa = polynomialValue(c, n, a);
+    const RootLanes fb = polynomialValue(c, n, b);
     const LaneMask signChange = used & (fb != 0.0) & (fa != 0.0) & ((fa < 0.0) ^ (fb < 0.0));
     LaneMask live = signChange;
 
@@ -249,7 +203,7 @@ ESSENTIAL_INLINE_INTO_CLONES void narrowAndPolish(const double* d, int n,
         if (!anyLane(live)) break;
         diagnostics.bracketEvaluations += countLanes(live);
         const RootLanes m = laneSplitPoints(a, b);
-        const RootLanes fm = laneValues(c, n, m);
+        const RootLanes fm = polynomialValue(c, n, m);
         const LaneMask onRoot = live & (fm == 0.0);
         const LaneMask sameSideAsA = ~((fm < 0.0) ^ (fa < 0.0));
         const LaneMask moveA = live & (onRoot | sameSideAsA);
@@ -269,7 +223,7 @@ ESSENTIAL_INLINE_INTO_CLONES void narrowAndPolish(const double* d, int n,
     live = signChange & ~narrowed;
     LaneMask iterations = live & 0;
     RootLanes f, df;
-    laneValuesAndDerivatives(c, n, z, f, df);
+    polynomialValueAndDerivative(c, n, z, f, df);
     const long long maxIterations = settings.maxPolishIterations;
     const double tolerance = settings.polishTolerance;
     for (;;) {
@@ -287,7 +241,7 @@ ESSENTIAL_INLINE_INTO_CLONES void narrowAndPolish(const double* d, int n,
         z = live ? newZ : z;
         live &= ~(newStep <= tolerance * laneMax(1.0, laneAbs(newZ)));
         RootLanes fz, dfz;
-        laneValuesAndDerivatives(c, n, z, fz, dfz);
+        polynomialValueAndDerivative(c, n, z, fz, dfz);
         f = live ? fz : f;
         df = live ? dfz : df;
         const LaneMask below = fz < 0.0;

@@ -16,35 +16,32 @@ namespace cv {
 namespace essential {
 namespace solvers {
 
-/** c[0] + ... + c[N] t^N by Horner's rule, the degree known at compile time (no loop left). */
-template <int N> inline double polynomialValueOfDegree(const double* c, double t)
-{
-    double v = c[N];
-#pragma GCC unroll 10
-    for (int i = N - 1; i >= 0; --i)
-        v = v * t + c[i];
-    return v;
-}
-
 /** c[0] + c[1] t + ... + c[n] t^n by Horner's rule. The five-point solver's d(z) is of degree 10
-but for degenerate samples, so that degree takes the loop-free path (the same operations). */
-ESSENTIAL_INLINE_INTO_CLONES double polynomialValue(const double* c, int n, double t)
+but for degenerate samples, so that degree takes the loop-free path (the same operations). T is
+double, or a vector of doubles whose lanes are evaluated side by side (the solver's root lanes),
+each lane by exactly the operations of the scalar evaluation. */
+template <class T> ESSENTIAL_INLINE_INTO_CLONES T polynomialValue(const T* c, int n, T t)
 {
-    if (n == 10) return polynomialValueOfDegree<10>(c, t);
-    double v = c[n];
+    T v = c[n];
+    if (n == 10) {
+#pragma GCC unroll 10
+        for (int i = 9; i >= 0; --i)
+            v = v * t + c[i];
+        return v;
+    }
 #pragma GCC unroll 10
     for (int i = n - 1; i >= 0; --i)
         v = v * t + c[i];
     return v;
 }
 
-/** d(t) and d'(t) together by Horner's rule. */
-ESSENTIAL_INLINE_INTO_CLONES void polynomialValueAndDerivative(const double* c, int n, double t,
-                                                               double& f, double& df)
+/** d(t) and d'(t) together by Horner's rule; T as for polynomialValue. */
+template <class T>
+ESSENTIAL_INLINE_INTO_CLONES void polynomialValueAndDerivative(const T* c, int n, T t, T& f, T& df)
 {
+    f = c[n];
+    df = T{};
     if (n == 10) {
-        f = c[10];
-        df = 0.0;
 #pragma GCC unroll 10
         for (int i = 9; i >= 0; --i) {
             df = df * t + f;
@@ -52,8 +49,6 @@ ESSENTIAL_INLINE_INTO_CLONES void polynomialValueAndDerivative(const double* c, 
         }
         return;
     }
-    f = c[n];
-    df = 0.0;
 #pragma GCC unroll 10
     for (int i = n - 1; i >= 0; --i) {
         df = df * t + f;
@@ -91,20 +86,27 @@ public:
             const int k = size_ - 1;
             double r[11];
             const int m = degree_[k - 1], nk = degree_[k];
-            for (int i = 0; i <= m; ++i)
-                r[i] = p_[k - 1][i];
-            const double scale = largest_[k - 1];
-            const double lead = p_[k][nk];
-            for (int i = m; i >= nk; --i) {
-                const double f = r[i] / lead;
-                q_[k][i - nk] = f;
-                for (int j = 0; j < nk; ++j)
-                    r[i - nk + j] -= f * p_[k][j];
-                r[i] = 0.0;
+            const double zero = 1e-14 * largest_[k - 1];
+            // The usual step (a remainder one degree below its divisor) by code of fixed length.
+            const bool linear = m == nk + 1;
+            if (linear && linearStepOfDegree(nk, k, zero, r)) {
+                ++size_;
+                continue;
             }
-            qDegree_[k] = m - nk;
+            if (!linear) {
+                for (int i = 0; i <= m; ++i)
+                    r[i] = p_[k - 1][i];
+                const double lead = p_[k][nk];
+                for (int i = m; i >= nk; --i) {
+                    const double f = r[i] / lead;
+                    q_[k][i - nk] = f;
+                    for (int j = 0; j < nk; ++j)
+                        r[i - nk + j] -= f * p_[k][j];
+                    r[i] = 0.0;
+                }
+                qDegree_[k] = m - nk;
+            }
             int rd = nk - 1;
-            const double zero = 1e-14 * scale;
             while (rd >= 0 && std::abs(r[rd]) <= zero)
                 --rd;
             if (rd < 0) break; // p(k) divides p(k-1): repeated roots
@@ -116,6 +118,9 @@ public:
             normalise(size_, s_[size_]);
             ++size_;
         }
+        allLinear_ = true;
+        for (int k = 1; k + 1 < size_; ++k)
+            allLinear_ = allLinear_ && qDegree_[k] == 1;
     }
 
     /** Sign changes of the sequence at t (zeros skipped). */
@@ -128,6 +133,15 @@ public:
         double v = polynomialValue(p_[last - 1], degree_[last - 1], t);
         int changes = 0, previous = signOf(above);
         countSign(v, changes, previous);
+        if (allLinear_) {
+            for (int k = last - 1; k >= 1; --k) {
+                const double below = (q_[k][0] + q_[k][1] * t) * v - s_[k + 1] * above;
+                countSign(below, changes, previous);
+                above = v;
+                v = below;
+            }
+            return changes;
+        }
         for (int k = last - 1; k >= 1; --k) {
             const double q =
                 qDegree_[k] == 1 ? q_[k][0] + q_[k][1] * t : polynomialValue(q_[k], qDegree_[k], t);
@@ -161,6 +175,69 @@ public:
     }
 
 private:
+    /** One step of build() where p(k-1) has degree NK + 1 and p(k) degree NK (the quotient is
+    linear), every loop of a length known at compile time: the same operations in the same order as
+    the general step, so the same bits. r receives the remainder. Returns false, p(k + 1) not
+    written, when the remainder's leading coefficient is zero to rounding (`zero`): the general step
+    then seeks its degree. */
+    template <int NK> ESSENTIAL_INLINE_INTO_CLONES bool linearStep(int k, double zero, double* r)
+    {
+        const double* divisor = p_[k];
+        for (int i = 0; i <= NK + 1; ++i)
+            r[i] = p_[k - 1][i];
+        const double lead = divisor[NK];
+        for (int i = NK + 1; i >= NK; --i) {
+            const double f = r[i] / lead;
+            q_[k][i - NK] = f;
+            for (int j = 0; j < NK; ++j)
+                r[i - NK + j] -= f * divisor[j];
+            r[i] = 0.0;
+        }
+        qDegree_[k] = 1;
+        if (!(std::abs(r[NK - 1]) > zero)) return false;
+        double* next = p_[k + 1];
+        double m = 0.0;
+        for (int i = 0; i < NK; ++i) {
+            next[i] = -r[i];
+            m = std::max(m, std::abs(r[i]));
+        }
+        degree_[k + 1] = NK - 1;
+        s_[k + 1] = m;
+        largest_[k + 1] = m;
+        if (m > 0.0) {
+            const double scale = 1.0 / m;
+            for (int i = 0; i < NK; ++i)
+                next[i] *= scale;
+            largest_[k + 1] = std::max(0.0, m * scale);
+        }
+        return true;
+    }
+
+    /** linearStep for a divisor of degree nk (1 to 9, as d has degree 10 at most). */
+    ESSENTIAL_INLINE_INTO_CLONES bool linearStepOfDegree(int nk, int k, double zero, double* r)
+    {
+        switch (nk) {
+        case 1:
+            return linearStep<1>(k, zero, r);
+        case 2:
+            return linearStep<2>(k, zero, r);
+        case 3:
+            return linearStep<3>(k, zero, r);
+        case 4:
+            return linearStep<4>(k, zero, r);
+        case 5:
+            return linearStep<5>(k, zero, r);
+        case 6:
+            return linearStep<6>(k, zero, r);
+        case 7:
+            return linearStep<7>(k, zero, r);
+        case 8:
+            return linearStep<8>(k, zero, r);
+        default:
+            return linearStep<9>(k, zero, r);
+        }
+    }
+
     /** Sign changes along v[0..n), zeros skipped (Sturm's theorem counts them so). */
     static int countSignChanges(const double* v, int n)
     {
@@ -214,6 +291,7 @@ private:
     int degree_[11];
     int qDegree_[11];
     int size_ = 0;
+    bool allLinear_ = false; //!< every quotient signChanges uses is linear (the usual case)
 };
 
 } // namespace solvers

@@ -5,6 +5,12 @@
 // roots of a polynomial on an interval, and its recurrence evaluation counts sign changes exactly
 // as evaluating every member on its own does, on the solver's own polynomials d(z).
 
+#if defined(__GNUC__) && !defined(__clang__)
+// The lane test below passes 32-byte vectors to the header's inlined templates, which GCC warns
+// about (an ABI change without AVX) at the header's lines; no such vector crosses an ABI.
+#pragma GCC diagnostic ignored "-Wpsabi"
+#endif
+
 #include "solvers/nister_five_point.hpp"
 #include "solvers/sturm_sequence.hpp"
 #include "synthetic_scene.hpp"
@@ -96,5 +102,67 @@ TEST(SturmSequence, RecurrenceCountsLikeDirectEvaluationOnTheSolversPolynomials)
     EXPECT_GT(built, 390);
     EXPECT_EQ(disagreements, 0);
 }
+
+#if defined(__GNUC__) && !defined(__clang__)
+typedef double TestLanes __attribute__((vector_size(4 * sizeof(double))));
+typedef long long TestMask __attribute__((vector_size(4 * sizeof(double))));
+
+/** The counts of signChangesInLanes at four points against signChanges at each. */
+int laneDisagreements(const SturmSequence& s, const std::vector<double>& points)
+{
+    int disagreements = 0;
+    for (size_t i = 0; i + 4 <= points.size(); i += 4) {
+        int counts[4];
+        s.signChangesInLanes<TestLanes, TestMask, 4>(
+            TestLanes{points[i], points[i + 1], points[i + 2], points[i + 3]}, counts);
+        for (int l = 0; l < 4; ++l)
+            disagreements += counts[l] != s.signChanges(points[i + l]);
+    }
+    return disagreements;
+}
+
+// The five-point solver isolates its roots with the counts of four split points at once
+// (nister_five_point.cpp, isolateRootsInLanes); they must be the scalar counts exactly, zeros of
+// members included (integer roots evaluate to an exact 0).
+TEST(SturmSequence, LanesCountLikeOneAtATime)
+{
+    SturmSequence s;
+    const std::vector<double> integer = fromRoots({-3.0, -1.0, 1.0, 2.0, 5.0}, 1.0);
+    s.build(integer.data(), 5);
+    ASSERT_TRUE(s.allLinear());
+    std::vector<double> points;
+    for (int k = -24; k <= 24; ++k)
+        points.push_back(0.25 * k); // the roots, the derivative's simple ones, and between
+    EXPECT_EQ(laneDisagreements(s, points), 0);
+
+    cv::essential::solvers::NisterFivePointSolver solver;
+    cv::RNG rng(2);
+    cv::Matx33d E[10];
+    int compared = 0, disagreements = 0;
+    for (int i = 0; i < 200; ++i) {
+        essential_test::SceneConfig cfg;
+        cfg.numPoints = 5;
+        cfg.inlierRatio = i % 3 ? 1.0 : 0.0;
+        cfg.noiseSigma = i % 2 ? 0.0 : 0.001;
+        const essential_test::SyntheticScene p = essential_test::makeScene(cfg, 93000 + i);
+        solver.solve(p.x1.data(), p.x2.data(), rng, E);
+        const double* d = solver.lastDiagnostics().polynomial;
+        int degree = 10;
+        while (degree > 0 && d[degree] == 0.0)
+            --degree;
+        if (degree < 1) continue;
+        s.build(d, degree);
+        if (!s.allLinear()) continue;
+        points.clear();
+        for (int k = -400; k < 400; ++k)
+            points.push_back(0.25 * k + 0.003 * (i % 7));
+        disagreements += laneDisagreements(s, points);
+        compared += static_cast<int>(points.size());
+    }
+    std::printf("[sturm] lanes: %d counts compared, %d disagreements\n", compared, disagreements);
+    EXPECT_GT(compared, 100000);
+    EXPECT_EQ(disagreements, 0);
+}
+#endif
 
 } // namespace

@@ -518,6 +518,81 @@ ESSENTIAL_INLINE_INTO_CLONES int isolateRoots(const FrameWork& w, const NisterSe
     return numSingles;
 }
 
+#if ESSENTIAL_ROOT_LANES
+/** isolateRoots with the splits of up to four brackets counted side by side (the Sturm counts of
+one split wait on the count before; the brackets of one level do not): the same split points and
+counts, so the same single-root brackets, put in ascending order at the end (the depth-first
+version produces them so). For a Sturm sequence with linear quotients only (allLinear()). */
+ESSENTIAL_INLINE_INTO_CLONES int
+isolateRootsInLanes(const FrameWork& w, const NisterSettings& settings, double bound,
+                    double* singleA, double* singleB,
+                    NisterFivePointSolver::Diagnostics& diagnostics)
+{
+    // Brackets still holding several roots; at most 10 roots, so few are pending at once (the
+    // bound guards against counts off by rounding).
+    constexpr int kMaxPending = 64;
+    double pa[kMaxPending], pb[kMaxPending];
+    int pva[kMaxPending], pvb[kMaxPending];
+    int pending = 0, numSingles = 0;
+    auto classify = [&](double a, double b, int va, int vb) {
+        const int count = va - vb;
+        if (count <= 0) return;
+        if (count == 1) {
+            if (numSingles < kMaxSingles) {
+                singleA[numSingles] = a;
+                singleB[numSingles++] = b;
+            }
+            return;
+        }
+        if (b - a < settings.minBracketWidth || pending == kMaxPending) {
+            diagnostics.abandonedRepeated += count;
+            return;
+        }
+        pa[pending] = a;
+        pb[pending] = b;
+        pva[pending] = va;
+        pvb[pending++] = vb;
+    };
+    classify(-bound, bound, w.vLow, w.vHigh);
+    while (pending > 0) {
+        // The last (up to) four pending brackets, split together; idle lanes repeat the first.
+        const int group = std::min(kRootLanes, pending);
+        const int first = pending - group;
+        double a[kRootLanes], b[kRootLanes], mid[kRootLanes];
+        int va[kRootLanes], vb[kRootLanes], vm[kRootLanes];
+        for (int l = 0; l < group; ++l) {
+            a[l] = pa[first + l];
+            b[l] = pb[first + l];
+            va[l] = pva[first + l];
+            vb[l] = pvb[first + l];
+            mid[l] = splitPoint(a[l], b[l]);
+        }
+        for (int l = group; l < kRootLanes; ++l)
+            mid[l] = mid[0];
+        pending = first;
+        w.sturm.signChangesInLanes<RootLanes, LaneMask, kRootLanes>(
+            RootLanes{mid[0], mid[1], mid[2], mid[3]}, vm);
+        diagnostics.sturmEvaluations += group;
+        for (int l = 0; l < group; ++l) {
+            classify(a[l], mid[l], va[l], vm[l]);
+            classify(mid[l], b[l], vm[l], vb[l]);
+        }
+    }
+    // Ascending by the lower end (the brackets are disjoint): insertion, as there are few.
+    for (int i = 1; i < numSingles; ++i) {
+        const double ka = singleA[i], kb = singleB[i];
+        int j = i - 1;
+        for (; j >= 0 && singleA[j] > ka; --j) {
+            singleA[j + 1] = singleA[j];
+            singleB[j + 1] = singleB[j];
+        }
+        singleA[j + 1] = ka;
+        singleB[j + 1] = kb;
+    }
+    return numSingles;
+}
+#endif
+
 /** The root in the single-root bracket [a, b], narrowed on the sign of d alone (one Horner
 evaluation per step) until the bracket is narrow relative to the root, then polished (polishRoot);
 false for a bracket without a sign change of d (a root on the edge, or the count off by rounding).
@@ -564,10 +639,13 @@ ESSENTIAL_INLINE_INTO_CLONES int findRealRoots(const FrameWork& w, const NisterS
                                                NisterFivePointSolver::Diagnostics& diagnostics)
 {
     double singleA[kMaxSingles], singleB[kMaxSingles];
-    const int numSingles = isolateRoots(w, settings, bound, singleA, singleB, diagnostics);
     int numRoots = 0;
 #if ESSENTIAL_ROOT_LANES
     if (inLanes) {
+        const int numSingles =
+            w.sturm.allLinear()
+                ? isolateRootsInLanes(w, settings, bound, singleA, singleB, diagnostics)
+                : isolateRoots(w, settings, bound, singleA, singleB, diagnostics);
         for (int g = 0; g < numSingles; g += kRootLanes) {
             double z[kRootLanes];
             bool ok[kRootLanes];
@@ -586,6 +664,7 @@ ESSENTIAL_INLINE_INTO_CLONES int findRealRoots(const FrameWork& w, const NisterS
 #else
     (void)inLanes;
 #endif
+    const int numSingles = isolateRoots(w, settings, bound, singleA, singleB, diagnostics);
     for (int s = 0; s < numSingles; ++s) {
         double z = 0.0;
         if (narrowAndPolishOne(w.d, w.degree, settings, singleA[s], singleB[s], z, diagnostics))

@@ -153,6 +153,44 @@ public:
         return changes;
     }
 
+    /** signChanges at the lanes of t, side by side: Lanes is a vector of doubles (GCC's vector
+    extension) and Mask the integer vector of its comparisons; counts[l] receives the count at t[l]
+    for l < kLanes. Each lane takes exactly the operations of signChanges(t[l]) (IEEE operations
+    lane by lane, the sign count by selects), so the counts are the same. Only for a sequence whose
+    quotients are all linear (allLinear()), as the solver's nearly always are. */
+    template <class Lanes, class Mask, int kLanes>
+    ESSENTIAL_INLINE_INTO_CLONES void signChangesInLanes(Lanes t, int* counts) const
+    {
+        const int last = size_ - 1;
+        Lanes above = laneValue<Lanes>(p_[last], degree_[last], t);
+        Lanes v = laneValue<Lanes>(p_[last - 1], degree_[last - 1], t);
+        const Mask zero{}, one = zero + 1, minusOne = zero - 1;
+        // signOf lane by lane: 0 for a zero, -1 below it, +1 otherwise (a NaN too).
+        auto signs = [&](Lanes x) {
+            const Mask nonzero = x != 0.0;
+            const Mask negative = x < 0.0;
+            return negative ? minusOne : (nonzero ? one : zero);
+        };
+        Mask changes = zero, previous = signs(above);
+        auto count = [&](Lanes x) {
+            const Mask sign = signs(x);
+            changes -= (sign != zero) & (previous != zero) & (sign != previous);
+            previous = sign != zero ? sign : previous;
+        };
+        count(v);
+        for (int k = last - 1; k >= 1; --k) {
+            const Lanes below = (q_[k][0] + q_[k][1] * t) * v - s_[k + 1] * above;
+            count(below);
+            above = v;
+            v = below;
+        }
+        for (int l = 0; l < kLanes; ++l)
+            counts[l] = static_cast<int>(changes[l]);
+    }
+
+    /** Every quotient signChanges uses is linear. */
+    bool allLinear() const { return allLinear_; }
+
     /** The same by evaluating every member on its own (for tests of the recurrence). */
     int signChangesDirect(double t) const
     {
@@ -236,6 +274,17 @@ private:
         default:
             return linearStep<9>(k, zero, r);
         }
+    }
+
+    /** c(t) lane by lane with scalar coefficients, as polynomialValue: each coefficient enters as
+    c - 0, which is c exactly (-0 included). */
+    template <class Lanes>
+    ESSENTIAL_INLINE_INTO_CLONES static Lanes laneValue(const double* c, int n, Lanes t)
+    {
+        Lanes v = c[n] - Lanes{};
+        for (int i = n - 1; i >= 0; --i)
+            v = v * t + c[i];
+        return v;
     }
 
     /** Sign changes along v[0..n), zeros skipped (Sturm's theorem counts them so). */

@@ -17,6 +17,7 @@
 
 #include "essential_test.hpp"
 
+#include <cstdint>
 #include <cstdio>
 #include <vector>
 
@@ -37,6 +38,25 @@ std::vector<double> fromRoots(const std::vector<double>& roots, double scale)
         c = next;
     }
     return c;
+}
+
+/** The five-point solver's d(z) on a five-point scene (`seed`; all inliers or random points, with
+`noise`): its degree, 0 when d vanishes; d points into the solver's diagnostics. */
+int solverPolynomial(cv::essential::solvers::NisterFivePointSolver& solver, cv::RNG& rng,
+                     double inlierRatio, double noise, uint64_t seed, const double*& d)
+{
+    essential_test::SceneConfig cfg;
+    cfg.numPoints = 5;
+    cfg.inlierRatio = inlierRatio;
+    cfg.noiseSigma = noise;
+    const essential_test::SyntheticScene p = essential_test::makeScene(cfg, seed);
+    cv::Matx33d E[10];
+    solver.solve(p.x1.data(), p.x2.data(), rng, E);
+    d = solver.lastDiagnostics().polynomial;
+    int degree = 10;
+    while (degree > 0 && d[degree] == 0.0)
+        --degree;
+    return degree;
 }
 
 TEST(SturmSequence, CountsTheRealRootsOfAKnownPolynomial)
@@ -74,19 +94,10 @@ TEST(SturmSequence, RecurrenceCountsLikeDirectEvaluationOnTheSolversPolynomials)
 {
     cv::essential::solvers::NisterFivePointSolver solver;
     cv::RNG rng(1);
-    cv::Matx33d E[10];
     long evaluations = 0, disagreements = 0, built = 0;
     for (int i = 0; i < 400; ++i) {
-        essential_test::SceneConfig cfg;
-        cfg.numPoints = 5;
-        cfg.inlierRatio = 1.0;
-        cfg.noiseSigma = i % 2 ? 0.0 : 0.001;
-        const essential_test::SyntheticScene p = essential_test::makeScene(cfg, 91000 + i);
-        solver.solve(p.x1.data(), p.x2.data(), rng, E);
-        const double* d = solver.lastDiagnostics().polynomial;
-        int degree = 10;
-        while (degree > 0 && d[degree] == 0.0)
-            --degree;
+        const double* d = nullptr;
+        const int degree = solverPolynomial(solver, rng, 1.0, i % 2 ? 0.0 : 0.001, 91000 + i, d);
         if (degree < 1) continue;
         ++built;
         SturmSequence s;
@@ -137,19 +148,11 @@ TEST(SturmSequence, LanesCountLikeOneAtATime)
 
     cv::essential::solvers::NisterFivePointSolver solver;
     cv::RNG rng(2);
-    cv::Matx33d E[10];
     int compared = 0, disagreements = 0;
     for (int i = 0; i < 200; ++i) {
-        essential_test::SceneConfig cfg;
-        cfg.numPoints = 5;
-        cfg.inlierRatio = i % 3 ? 1.0 : 0.0;
-        cfg.noiseSigma = i % 2 ? 0.0 : 0.001;
-        const essential_test::SyntheticScene p = essential_test::makeScene(cfg, 93000 + i);
-        solver.solve(p.x1.data(), p.x2.data(), rng, E);
-        const double* d = solver.lastDiagnostics().polynomial;
-        int degree = 10;
-        while (degree > 0 && d[degree] == 0.0)
-            --degree;
+        const double* d = nullptr;
+        const int degree =
+            solverPolynomial(solver, rng, i % 3 ? 1.0 : 0.0, i % 2 ? 0.0 : 0.001, 93000 + i, d);
         if (degree < 1) continue;
         s.build(d, degree);
         if (!s.allLinear()) continue;

@@ -88,8 +88,8 @@ public:
             const int m = degree_[k - 1], nk = degree_[k];
             const double zero = 1e-14 * largest_[k - 1];
             // The usual step (a remainder one degree below its divisor) by code of fixed length.
-            const bool linear = m == nk + 1;
-            if (linear && linearStepOfDegree(nk, k, zero, r)) {
+            const bool linear = m == nk + 1 && nk <= 9; // nk >= 1: the loop's condition
+            if (linear && linearStepOfDegree<9>(nk, k, zero, r)) {
                 ++size_;
                 continue;
             }
@@ -251,29 +251,15 @@ private:
         return true;
     }
 
-    /** linearStep for a divisor of degree nk (1 to 9, as d has degree 10 at most). */
+    /** linearStep for a divisor of degree nk, 1 to NK (NK = 9: d has degree 10 at most). */
+    template <int NK>
     ESSENTIAL_INLINE_INTO_CLONES bool linearStepOfDegree(int nk, int k, double zero, double* r)
     {
-        switch (nk) {
-        case 1:
-            return linearStep<1>(k, zero, r);
-        case 2:
-            return linearStep<2>(k, zero, r);
-        case 3:
-            return linearStep<3>(k, zero, r);
-        case 4:
-            return linearStep<4>(k, zero, r);
-        case 5:
-            return linearStep<5>(k, zero, r);
-        case 6:
-            return linearStep<6>(k, zero, r);
-        case 7:
-            return linearStep<7>(k, zero, r);
-        case 8:
-            return linearStep<8>(k, zero, r);
-        default:
-            return linearStep<9>(k, zero, r);
-        }
+        if (nk == NK) return linearStep<NK>(k, zero, r);
+        if constexpr (NK > 1)
+            return linearStepOfDegree<NK - 1>(nk, k, zero, r);
+        else
+            return false;
     }
 
     /** c(t) lane by lane with scalar coefficients, as polynomialValue: each coefficient enters as

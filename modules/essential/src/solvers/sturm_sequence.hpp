@@ -133,15 +133,6 @@ public:
         double v = polynomialValue(p_[last - 1], degree_[last - 1], t);
         int changes = 0, previous = signOf(above);
         countSign(v, changes, previous);
-        if (allLinear_) {
-            for (int k = last - 1; k >= 1; --k) {
-                const double below = (q_[k][0] + q_[k][1] * t) * v - s_[k + 1] * above;
-                countSign(below, changes, previous);
-                above = v;
-                v = below;
-            }
-            return changes;
-        }
         for (int k = last - 1; k >= 1; --k) {
             const double q =
                 qDegree_[k] == 1 ? q_[k][0] + q_[k][1] * t : polynomialValue(q_[k], qDegree_[k], t);
@@ -326,7 +317,7 @@ private:
     int degree_[11];
     int qDegree_[11];
     int size_ = 0;
-    bool allLinear_ = false; //!< every quotient signChanges uses is linear (the usual case)
+    bool allLinear_ = false; //!< every quotient is linear: signChangesInLanes' condition
 };
 
 } // namespace solvers

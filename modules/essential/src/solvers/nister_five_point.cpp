@@ -1,13 +1,11 @@
 // This file is part of opencv_essential, licensed under the Apache License, Version 2.0.
 // See the LICENSE file at the top of the source tree.
 
-#if defined(__GNUC__) && !defined(__clang__)
 // The root lanes below pass 32-byte vectors by value between functions that are all inlined
 // (ESSENTIAL_INLINE_INTO_CLONES, sturm_sequence.hpp's Horner templates included), so the ABI change
-// GCC warns about in the default clone never reaches an ABI. The warning is off for the whole file:
-// GCC reports it at the templates' lines in the header and where it emits the clones, at the end.
-#pragma GCC diagnostic ignored "-Wpsabi"
-#endif
+// GCC reports for them in the default clone never reaches an ABI: this file is compiled with
+// -Wno-psabi (modules/essential/CMakeLists.txt), the one switch that silences both the warning and
+// its note.
 
 #include "solvers/nister_five_point.hpp"
 

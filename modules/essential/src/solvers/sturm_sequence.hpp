@@ -19,10 +19,12 @@ namespace solvers {
 /** c[0] + c[1] t + ... + c[n] t^n by Horner's rule. The five-point solver's d(z) is of degree 10
 but for degenerate samples, so that degree takes the loop-free path (the same operations). T is
 double, or a vector of doubles whose lanes are evaluated side by side (the solver's root lanes),
-each lane by exactly the operations of the scalar evaluation. */
-template <class T> ESSENTIAL_INLINE_INTO_CLONES T polynomialValue(const T* c, int n, T t)
+each lane by exactly the operations of the scalar evaluation; the coefficients C are of the same
+type, or scalars shared by every lane (the Sturm members at split points in lanes). The leading one
+enters as c[n] - 0, which is c[n] exactly (-0 included) and a broadcast for scalar coefficients. */
+template <class C, class T> ESSENTIAL_INLINE_INTO_CLONES T polynomialValue(const C* c, int n, T t)
 {
-    T v = c[n];
+    T v = c[n] - T{};
     if (n == 10) {
 #pragma GCC unroll 10
         for (int i = 9; i >= 0; --i)
@@ -153,8 +155,8 @@ public:
     ESSENTIAL_INLINE_INTO_CLONES void signChangesInLanes(Lanes t, int* counts) const
     {
         const int last = size_ - 1;
-        Lanes above = laneValue<Lanes>(p_[last], degree_[last], t);
-        Lanes v = laneValue<Lanes>(p_[last - 1], degree_[last - 1], t);
+        Lanes above = polynomialValue(p_[last], degree_[last], t);
+        Lanes v = polynomialValue(p_[last - 1], degree_[last - 1], t);
         const Mask zero{}, one = zero + 1, minusOne = zero - 1;
         // signOf lane by lane: 0 for a zero, -1 below it, +1 otherwise (a NaN too).
         auto signs = [&](Lanes x) {
@@ -251,17 +253,6 @@ private:
             return linearStepOfDegree<NK - 1>(nk, k, zero, r);
         else
             return false;
-    }
-
-    /** c(t) lane by lane with scalar coefficients, as polynomialValue: each coefficient enters as
-    c - 0, which is c exactly (-0 included). */
-    template <class Lanes>
-    ESSENTIAL_INLINE_INTO_CLONES static Lanes laneValue(const double* c, int n, Lanes t)
-    {
-        Lanes v = c[n] - Lanes{};
-        for (int i = n - 1; i >= 0; --i)
-            v = v * t + c[i];
-        return v;
     }
 
     /** Sign changes along v[0..n), zeros skipped (Sturm's theorem counts them so). */

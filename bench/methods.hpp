@@ -104,6 +104,11 @@ inline void applyOursOption(const std::string& key, const std::string& value,
         if (!essential_samples::parseInt(value, integer) || integer < 0 || integer > 1000)
             fail(where + "lo (IRLS iterations of local optimisation) is an integer >= 0", 2);
         params.loIterations = static_cast<int>(integer);
+    } else if (key == "loSample") {
+        if (!essential_samples::parseInt(value, integer) || integer < 0 ||
+            (integer > 0 && integer < 5) || integer > 100000000)
+            fail(where + "loSample (points a polish fits; 0: all) is 0 or an integer >= 5", 2);
+        params.loSampleSize = static_cast<int>(integer);
     } else if (key == "sprt") {
         if (!parseBool(value, params.sprt)) fail(where + "sprt is 0 or 1", 2);
     } else if (key == "threshold") {
@@ -131,8 +136,8 @@ inline void applyOursOption(const std::string& key, const std::string& value,
         if (!parseBool(value, params.refine)) fail(where + "refine is 0 or 1", 2);
     } else {
         fail("unknown ours option '" + key +
-                 "' (known: solver, sampler, maxIters, lo, sprt, threshold, budgetMs, budget, "
-                 "plane, front, local, refine)",
+                 "' (known: solver, sampler, maxIters, lo, loSample, sprt, threshold, budgetMs, "
+                 "budget, plane, front, local, refine)",
              2);
     }
 }

@@ -206,9 +206,14 @@ struct CV_EXPORTS EssentialParams
     ENGINE_OPENCV. Must be >= 0. Default 5. */
     int loIterations = 5;
 
-    /** LO on a random subset of this many of the model's inliers; 0 (default): on all of them.
-    Must be 0 or >= 5 (IRLS fits five degrees of freedom). */
-    int loSampleSize = 0;
+    /** LO on a random subset of this many of the points within 2 thresholds of the model; 0: on
+    all of them. Must be 0 or >= 5 (IRLS fits five degrees of freedom). Default 100: the polish
+    only has to reach the model's basin (the final refinement fits all the inliers), and on 100
+    points it does so as well as on all of them, at less cost where there are more (real pairs
+    over eight random streams: AUC@5 +0.002, right -0.0005; the hard sets' right-rate unchanged,
+    their 12 000-match rail pairs 0.91 times the time; docs/REAL_PAIRS.md, "The polish on 100
+    points"). */
+    int loSampleSize = 100;
 
     //! @}
 

@@ -434,6 +434,38 @@ TEST(BadInputTable, CoordinatesBeyondRangeAreRejected)
     expectThrowsOnAll(0, b, {"points2", "index 2"}, kAll);
 }
 
+TEST(BadInputTable, SeveralFaultsReportTheFirstCheckInOrder)
+{
+    // The points are read, normalised and checked in one pass; input with several faults must
+    // still get the exception of the first check in the documented order: finite coordinates
+    // (points1, then points2), the number of points, then the normalised range (points1, then
+    // points2).
+    Args a; // beyond range in points1, non-finite in points2: the finite check comes first
+    a.p1.at<cv::Point2d>(4) = cv::Point2d(1e12, 0);
+    a.p2.at<cv::Point2d>(9).x = kNaN;
+    expectThrowsOnAll(0, a, {"points2", "non-finite", "9"}, kAll);
+    Args b; // non-finite in both: points1's index
+    b.p1.at<cv::Point2d>(30).y = kInf;
+    b.p2.at<cv::Point2d>(2).x = kNaN;
+    expectThrowsOnAll(0, b, {"points1", "non-finite", "30"}, kAll);
+    Args c; // three points, one beyond range: too few points comes first
+    c.p1 = c.p1.rowRange(0, 3).clone();
+    c.p2 = c.p2.rowRange(0, 3).clone();
+    c.p2.at<cv::Point2d>(1) = cv::Point2d(0, 1e13);
+    expectThrowsOnAll(kNeedsFivePoints, c, {"at least 5", "got 3"}, kEstimators);
+    Args d; // three points, one not finite: the finite check comes before the count
+    d.p1 = d.p1.rowRange(0, 3).clone();
+    d.p2 = d.p2.rowRange(0, 3).clone();
+    d.p1.at<cv::Point2d>(2).x = kNaN;
+    expectThrowsOnAll(0, d, {"points1", "non-finite", "2"}, kAll);
+    Args e; // beyond range in both: points1's index, the last point (the pass covers all)
+    const int last = e.p1.rows - 1;
+    e.p1.at<cv::Point2d>(last) = cv::Point2d(-1e12, 0);
+    e.p2.at<cv::Point2d>(0) = cv::Point2d(0, 1e12);
+    expectThrowsOnAll(0, e, {"points1", "index " + std::to_string(last), "1e8 focal lengths"},
+                      kAll);
+}
+
 TEST(BadInputTable, DuplicatedPointsGiveTheSameModel)
 {
     // Every correspondence given twice: the same E as once (within the refinement's tolerance),

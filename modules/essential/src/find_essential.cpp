@@ -36,15 +36,12 @@ Mat estimateWithCamera(InputArray points1, InputArray points2, const Matx33d& K,
                        const EssentialParams& params, PointReading reading, OutputArray mask,
                        MaskWriting maskWriting, EssentialReport* report, int64 start)
 {
-    std::vector<Point2d> p1, p2;
-    readPointPair(points1, points2, reading, p1, p2);
-    checkPointSets(p1, p2, 5);
+    Mat rows1, rows2;
+    readPointRows(points1, points2, reading, rows1, rows2);
+    const Problem problem = normalisedProblem(rows1, rows2, K, 5);
     const double meanFocal = 0.5 * (K(0, 0) + K(1, 1));
-    std::vector<Point2d> n1 = normalisePoints(p1, K), n2 = normalisePoints(p2, K);
-    checkNormalisedPoints(n1, "points1");
-    checkNormalisedPoints(n2, "points2");
     const InlierTest test{normalisedThreshold(params.threshold, meanFocal), inlierDistance(params)};
-    return estimate(makeProblem(n1, n2), test, params, mask, maskWriting, report, start);
+    return estimate(problem, test, params, mask, maskWriting, report, start);
 }
 
 } // namespace

@@ -108,7 +108,9 @@ Mat readAsRows(const Mat& m, bool isVector, const char* name, PointReading how)
     badLayout(name, m, isVector, how);
 }
 
-std::vector<Point2d> toPoints(const Mat& rows, const char* name)
+} // namespace
+
+std::vector<Point2d> pointsFromRows(const Mat& rows, const char* name)
 {
     std::vector<Point2d> out(static_cast<size_t>(rows.rows));
     for (int i = 0; i < rows.rows; ++i) {
@@ -121,18 +123,15 @@ std::vector<Point2d> toPoints(const Mat& rows, const char* name)
     return out;
 }
 
-} // namespace
-
-void readPointPair(InputArray points1, InputArray points2, PointReading how,
-                   std::vector<Point2d>& out1, std::vector<Point2d>& out2)
+void readPointRows(InputArray points1, InputArray points2, PointReading how, Mat& rows1, Mat& rows2)
 {
     if (points1.empty()) badArg("points1 is empty: at least 5 points are needed");
     if (points2.empty()) badArg("points2 is empty: at least 5 points are needed");
     const Mat m1 = points1.getMat(), m2 = points2.getMat();
     const bool vector1 = points1.kind() == _InputArray::STD_VECTOR;
     const bool vector2 = points2.kind() == _InputArray::STD_VECTOR;
-    const Mat rows1 = readAsRows(m1, vector1, "points1", how);
-    const Mat rows2 = readAsRows(m2, vector2, "points2", how);
+    rows1 = readAsRows(m1, vector1, "points1", how);
+    rows2 = readAsRows(m2, vector2, "points2", how);
     if (rows1.rows != rows2.rows)
         badArg("points1 and points2 differ in size (" + std::to_string(rows1.rows) + " vs " +
                std::to_string(rows2.rows) + " points)");
@@ -141,8 +140,15 @@ void readPointPair(InputArray points1, InputArray points2, PointReading how,
                ") must have the same number of channels with RANSAC or LMEDS (and in recoverPose "
                "from E), as for cv::findEssentialMat: pass both as vectors of points or both as "
                "N x 2 matrices");
-    out1 = toPoints(rows1, "points1");
-    out2 = toPoints(rows2, "points2");
+}
+
+void readPointPair(InputArray points1, InputArray points2, PointReading how,
+                   std::vector<Point2d>& out1, std::vector<Point2d>& out2)
+{
+    Mat rows1, rows2;
+    readPointRows(points1, points2, how, rows1, rows2);
+    out1 = pointsFromRows(rows1, "points1");
+    out2 = pointsFromRows(rows2, "points2");
 }
 
 PointReading readingForMethod(int method)

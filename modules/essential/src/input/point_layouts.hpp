@@ -38,6 +38,17 @@ enum class PointReading {
     UndistortCopy
 };
 
+/** Reads two point arrays the way `how` says into N x k one-channel CV_64F matrices (k >= 2, x and
+y in the first two columns). Throws cv::Exception (StsBadArg, naming points1 or points2) for an
+empty array, a layout or depth `how` does not accept, or two arrays of different sizes (or, for
+Classic, different channel counts). Checks neither the coordinates nor the number of points. */
+void readPointRows(InputArray points1, InputArray points2, PointReading how, Mat& rows1,
+                   Mat& rows2);
+
+/** The first two columns of readPointRows' `rows` as points; throws (naming `name` and the index)
+at the first non-finite coordinate. */
+std::vector<Point2d> pointsFromRows(const Mat& rows, const char* name);
+
 /** Reads two point arrays the way `how` says into pixel coordinates. Throws cv::Exception
 (StsBadArg, naming points1 or points2) for an empty array, a layout or depth `how` does not accept,
 two arrays of different sizes (or, for Classic, different channel counts), or a non-finite

@@ -3,6 +3,8 @@
 
 #include "input/problem.hpp"
 
+#include "input/point_layouts.hpp"
+
 #include <opencv2/calib3d.hpp>
 
 #include <cmath>
@@ -86,6 +88,56 @@ void checkNormalisedPoints(const std::vector<Point2d>& normalised, const char* n
                    " is more than 1e8 focal lengths from the principal point (or not finite) "
                    "once normalised by the camera matrix: no camera sees such a point");
     }
+}
+
+namespace {
+
+/** K^-1 applied to the first two columns of `rows` into x / y, as normalisePoints computes it (the
+same operations, so the same values); false if a result is not finite or beyond kMaxNormalised,
+which is also the case of every non-finite pixel coordinate (fx and fy are finite and positive). */
+bool normaliseRows(const Mat& rows, const Matx33d& K, double* x, double* y)
+{
+    const double fx = K(0, 0), fy = K(1, 1), s = K(0, 1), cx = K(0, 2), cy = K(1, 2);
+    const int n = rows.rows;
+    const double* r = n > 0 ? rows.ptr<double>(0) : nullptr;
+    const size_t stride = rows.step1();
+    // Counted, not branched on, so the loop has no early exit.
+    int outside = 0;
+    for (int i = 0; i < n; ++i, r += stride) {
+        const double yi = (r[1] - cy) / fy;
+        const double xi = (r[0] - cx - s * yi) / fx;
+        x[i] = xi;
+        y[i] = yi;
+        outside += !(std::abs(xi) <= kMaxNormalised) | !(std::abs(yi) <= kMaxNormalised);
+    }
+    return outside == 0;
+}
+
+} // namespace
+
+Problem normalisedProblem(const Mat& rows1, const Mat& rows2, const Matx33d& K, int minPoints)
+{
+    CV_Assert(rows1.rows == rows2.rows && rows1.type() == CV_64FC1 && rows2.type() == CV_64FC1 &&
+              rows1.cols >= 2 && rows2.cols >= 2);
+    Problem p;
+    const size_t n = static_cast<size_t>(rows1.rows);
+    p.x1.resize(n);
+    p.y1.resize(n);
+    p.x2.resize(n);
+    p.y2.resize(n);
+    if (rows1.rows >= minPoints && normaliseRows(rows1, K, p.x1.data(), p.y1.data()) &&
+        normaliseRows(rows2, K, p.x2.data(), p.y2.data()))
+        return p;
+    // A check fails: the step-by-step path throws its exception. (It returns only if the two
+    // paths round a coordinate at the kMaxNormalised bound differently, which a compiler that
+    // contracts one expression into a fused multiply-add and not the other could do.)
+    const std::vector<Point2d> p1 = pointsFromRows(rows1, "points1");
+    const std::vector<Point2d> p2 = pointsFromRows(rows2, "points2");
+    checkPointSets(p1, p2, minPoints);
+    const std::vector<Point2d> n1 = normalisePoints(p1, K), n2 = normalisePoints(p2, K);
+    checkNormalisedPoints(n1, "points1");
+    checkNormalisedPoints(n2, "points2");
+    return makeProblem(n1, n2);
 }
 
 double normalisedThreshold(double threshold, double meanFocal)

@@ -11,6 +11,8 @@
 
 #include <opencv2/core.hpp>
 
+#include <memory>
+#include <utility>
 #include <vector>
 
 namespace cv {
@@ -28,13 +30,36 @@ struct InlierTest
     InlierTest withThreshold(double t) const { return InlierTest{t, distance}; }
 };
 
+/** std::allocator, except that resize() leaves new doubles uninitialised instead of zeroing them:
+every Problem's arrays are written in full right after they are sized (a call sizes several, and
+its local optimisation resizes a subset per new best model), so the zeroing would be wasted
+stores. */
+template <class T> struct UninitialisedAllocator : std::allocator<T>
+{
+    template <class U> struct rebind
+    {
+        using other = UninitialisedAllocator<U>;
+    };
+    UninitialisedAllocator() = default;
+    template <class U> UninitialisedAllocator(const UninitialisedAllocator<U>&) noexcept {}
+    /** Value-initialisation (what resize() asks for) becomes default-initialisation. */
+    template <class U> void construct(U* p) noexcept { ::new (static_cast<void*>(p)) U; }
+    template <class U, class... Args> void construct(U* p, Args&&... args)
+    {
+        ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+    }
+};
+
+/** One coordinate of every correspondence of a Problem. */
+using Coordinates = std::vector<double, UninitialisedAllocator<double>>;
+
 /** The normalised correspondences of one call, stored once, in structure-of-arrays layout so that
 scoring loops vectorise; point1() / point2() read one correspondence (a solver's sample is gathered
 with them). What makes a point an inlier is not part of it: the stages that test points take an
 InlierTest beside it. */
 struct Problem
 {
-    std::vector<double> x1, y1, x2, y2;
+    Coordinates x1, y1, x2, y2;
 
     int size() const { return static_cast<int>(x1.size()); }
     Point2d point1(int i) const
@@ -73,6 +98,13 @@ void checkNormalisedPoints(const std::vector<Point2d>& normalised, const char* n
 /** The pixel threshold in normalised units; throws if it is not positive and finite (a huge
 threshold with a tiny focal length, or the converse). */
 double normalisedThreshold(double threshold, double meanFocal);
+
+/** The Problem of the pixel points of readPointRows' `rows1` <-> `rows2` normalised by K^-1, with
+the checks of the step-by-step path (pointsFromRows' finite coordinates for points1 then points2,
+checkPointSets' `minPoints`, checkNormalisedPoints for points1 then points2) and the same
+exceptions, in the same order. The points are read, normalised and checked in one pass over them
+into the Problem's arrays; only input that fails a check goes the step-by-step way, to throw. */
+Problem normalisedProblem(const Mat& rows1, const Mat& rows2, const Matx33d& K, int minPoints);
 
 /** The Problem of normalised points n1[i] <-> n2[i]. */
 Problem makeProblem(const std::vector<Point2d>& n1, const std::vector<Point2d>& n2);

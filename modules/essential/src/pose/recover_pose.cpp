@@ -128,15 +128,10 @@ int recoverPoseFromEssential(InputArray E, InputArray points1, InputArray points
                              double distanceThresh, OutputArray triangulatedPoints)
 {
     const Matx33d Em = readEssential(E);
-    std::vector<Point2d> p1, p2;
-    readPointPair(points1, points2, PointReading::Classic, p1, p2);
-    checkPointSets(p1, p2, 1);
-    const std::vector<Point2d> n1 = normalisePoints(p1, K);
-    const std::vector<Point2d> n2 = normalisePoints(p2, K);
-    checkNormalisedPoints(n1, "points1");
-    checkNormalisedPoints(n2, "points2");
-    return recoverPoseNormalisedPoints(Em, makeProblem(n1, n2), R, t, mask, distanceThresh,
-                                       triangulatedPoints);
+    Mat rows1, rows2;
+    readPointRows(points1, points2, PointReading::Classic, rows1, rows2);
+    return recoverPoseNormalisedPoints(Em, normalisedProblem(rows1, rows2, K, 1), R, t, mask,
+                                       distanceThresh, triangulatedPoints);
 }
 
 } // namespace

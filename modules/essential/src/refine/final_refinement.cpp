@@ -28,7 +28,8 @@ double estimateNoise(const Problem& problem, const Matx33d& E, double threshold,
                      int minPoints)
 {
     const int n = problem.size();
-    std::vector<double> squared(static_cast<size_t>(n));
+    // Written in full by sampsonErrors: no zeroing first.
+    std::vector<double, UninitialisedAllocator<double>> squared(static_cast<size_t>(n));
     scoring::sampsonErrors(E, problem, squared.data());
     const double limit = window * window * threshold * threshold;
     size_t kept = 0;

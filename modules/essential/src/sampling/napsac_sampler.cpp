@@ -22,7 +22,7 @@ struct Box
     double x0, y0, sx, sy; //!< origin and cell size per cell count 1 (divided by c at use)
 };
 
-Box boundingBox(const std::vector<double>& x, const std::vector<double>& y)
+Box boundingBox(const Coordinates& x, const Coordinates& y)
 {
     double x0 = x[0], x1 = x[0], y0 = y[0], y1 = y[0];
     for (size_t i = 1; i < x.size(); ++i) {

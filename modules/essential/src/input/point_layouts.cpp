@@ -66,6 +66,8 @@ Mat readAsRows(const Mat& m, bool isVector, const char* name, PointReading how)
         // OpenCV converts to double first (any depth, views copied), then asks for 2D points.
         const int n = m.checkVector(2, -1, /*requireContinuous*/ false);
         if (n < 0) badLayout(name, m, isVector, how);
+        // Doubles in one block are read where they are (nothing writes to the rows).
+        if (m.depth() == CV_64F && m.isContinuous()) return m.reshape(1, n);
         Mat converted;
         m.convertTo(converted, CV_64F);
         return converted.reshape(1, n);

@@ -4,6 +4,7 @@
 #include "input/problem.hpp"
 
 #include "input/point_layouts.hpp"
+#include "simd_dispatch.hpp"
 
 #include <opencv2/calib3d.hpp>
 
@@ -92,25 +93,45 @@ void checkNormalisedPoints(const std::vector<Point2d>& normalised, const char* n
 
 namespace {
 
-/** K^-1 applied to the first two columns of `rows` into x / y, as normalisePoints computes it (the
-same operations, so the same values); false if a result is not finite or beyond kMaxNormalised,
-which is also the case of every non-finite pixel coordinate (fx and fy are finite and positive). */
+/** K^-1 for an upper-triangular K with K(2,2) = 1, as normalisePoints computes it (the same
+operations, so the same values). */
+struct Normalisation
+{
+    double fx, fy, s, cx, cy;
+
+    /** Writes the normalised point; returns 1 if a coordinate is not finite or beyond
+    kMaxNormalised (as every non-finite pixel coordinate makes one: fx and fy are finite and
+    positive), else 0. */
+    int apply(double u, double v, double& x, double& y) const
+    {
+        y = (v - cy) / fy;
+        x = (u - cx - s * y) / fx;
+        return !(std::abs(x) <= kMaxNormalised) | !(std::abs(y) <= kMaxNormalised);
+    }
+};
+
+/** normalisedProblem's pass over one array: `n` rows of `stride` doubles (x, y first) into x / y;
+returns how many points are out of range. Counted, not branched on, so that the loop has no early
+exit; the common stride of 2 (N x 2 rows) gets a loop of its own, which the compiler vectorises. */
+ESSENTIAL_AVX2_CLONES int normaliseRows(const Normalisation& k, const double* r, size_t stride,
+                                        int n, double* x, double* y)
+{
+    int outside = 0;
+    if (stride == 2) {
+        for (int i = 0; i < n; ++i)
+            outside += k.apply(r[2 * i], r[2 * i + 1], x[i], y[i]);
+    } else {
+        for (int i = 0; i < n; ++i, r += stride)
+            outside += k.apply(r[0], r[1], x[i], y[i]);
+    }
+    return outside;
+}
+
 bool normaliseRows(const Mat& rows, const Matx33d& K, double* x, double* y)
 {
-    const double fx = K(0, 0), fy = K(1, 1), s = K(0, 1), cx = K(0, 2), cy = K(1, 2);
-    const int n = rows.rows;
-    const double* r = n > 0 ? rows.ptr<double>(0) : nullptr;
-    const size_t stride = rows.step1();
-    // Counted, not branched on, so the loop has no early exit.
-    int outside = 0;
-    for (int i = 0; i < n; ++i, r += stride) {
-        const double yi = (r[1] - cy) / fy;
-        const double xi = (r[0] - cx - s * yi) / fx;
-        x[i] = xi;
-        y[i] = yi;
-        outside += !(std::abs(xi) <= kMaxNormalised) | !(std::abs(yi) <= kMaxNormalised);
-    }
-    return outside == 0;
+    if (rows.rows == 0) return true;
+    const Normalisation k{K(0, 0), K(1, 1), K(0, 1), K(0, 2), K(1, 2)};
+    return normaliseRows(k, rows.ptr<double>(0), rows.step1(), rows.rows, x, y) == 0;
 }
 
 } // namespace
@@ -192,11 +213,14 @@ Problem subsetProblem(const Problem& problem, const int* indices, int count)
 
 Problem maskedProblem(const Problem& problem, const uchar* mask)
 {
-    std::vector<int> indices;
-    indices.reserve(static_cast<size_t>(problem.size()));
-    for (int i = 0; i < problem.size(); ++i)
-        if (mask[i]) indices.push_back(i);
-    return subsetProblem(problem, indices.data(), static_cast<int>(indices.size()));
+    // Every index is written, the count advanced only for a marked point: no branch per point.
+    std::vector<int, UninitialisedAllocator<int>> indices(static_cast<size_t>(problem.size()));
+    int count = 0;
+    for (int i = 0; i < problem.size(); ++i) {
+        indices[static_cast<size_t>(count)] = i;
+        count += mask[i] != 0;
+    }
+    return subsetProblem(problem, indices.data(), count);
 }
 
 void toPoint2d(const Problem& problem, std::vector<Point2d>& p1, std::vector<Point2d>& p2)

@@ -219,6 +219,9 @@ Mat estimate(const Problem& problem, InlierTest callTest, const EssentialParams&
     rep.localOptimisations = found.localOptimisations;
     rep.localOptimisationsKept = found.localOptimisationsKept;
     rep.sprtRejections = found.sprtRejections;
+    // The MSAC cost of found.E at the call's threshold, when one stage has computed it (the
+    // refinement's guard below needs it again).
+    double winnerCost = -1.0;
     if (found.found && params.planeParallax && params.engine == ENGINE_ADAPTIVE &&
         params.score == SCORE_METHOD_MSAC) {
         const scoring::Score before = scoring::scoreMsac(found.E, problem, callTest);
@@ -228,6 +231,8 @@ Mat estimate(const Problem& problem, InlierTest callTest, const EssentialParams&
             found.E = checked.E;
             found.inliers = checked.score.inliers;
             rep.planeParallaxKept = true;
+        } else {
+            winnerCost = before.cost;
         }
     }
     rep.timeSearchMs = msSince(tSearch);
@@ -249,7 +254,9 @@ Mat estimate(const Problem& problem, InlierTest callTest, const EssentialParams&
             // the truncated MSAC cost on all; keep it unless it is clearly worse on the MSAC cost
             // (5% slack for the difference of the two losses), which guards against a refinement
             // pulled away by structured outliers.
-            const double before = scoring::scoreMsac(found.E, problem, searched).cost;
+            const double before = winnerCost >= 0.0 && searched.threshold == callTest.threshold
+                                      ? winnerCost
+                                      : scoring::scoreMsac(found.E, problem, searched).cost;
             const double after = scoring::scoreMsac(refined.E, problem, searched).cost;
             if (after <= 1.05 * before) E = refined.E;
         }

@@ -67,15 +67,38 @@ Matx33d cameraFromFocal(double focal, Point2d pp)
     return Matx33d(focal, 0, pp.x, 0, focal, pp.y, 0, 0, 1);
 }
 
+namespace {
+
+/** K^-1 for an upper-triangular K with K(2,2) = 1: y = (v - cy) / fy, x = (u - cx - s y) / fx. The
+one formula of normalisePoints and normalisedProblem's pass, so both give the same values. */
+struct Normalisation
+{
+    double fx, fy, s, cx, cy;
+
+    explicit Normalisation(const Matx33d& K)
+        : fx(K(0, 0)), fy(K(1, 1)), s(K(0, 1)), cx(K(0, 2)), cy(K(1, 2))
+    {
+    }
+
+    /** Writes the normalised point; returns 1 if a coordinate is not finite or beyond
+    kMaxNormalised (as every non-finite pixel coordinate makes one: fx and fy are finite and
+    positive), else 0. */
+    int apply(double u, double v, double& x, double& y) const
+    {
+        y = (v - cy) / fy;
+        x = (u - cx - s * y) / fx;
+        return !(std::abs(x) <= kMaxNormalised) | !(std::abs(y) <= kMaxNormalised);
+    }
+};
+
+} // namespace
+
 std::vector<Point2d> normalisePoints(const std::vector<Point2d>& pixels, const Matx33d& K)
 {
-    // K^-1 for an upper-triangular K with K(2,2) = 1: y = (v - cy) / fy, x = (u - cx - s y) / fx.
-    const double fx = K(0, 0), fy = K(1, 1), s = K(0, 1), cx = K(0, 2), cy = K(1, 2);
+    const Normalisation k(K);
     std::vector<Point2d> out(pixels.size());
-    for (size_t i = 0; i < pixels.size(); ++i) {
-        const double y = (pixels[i].y - cy) / fy;
-        out[i] = Point2d((pixels[i].x - cx - s * y) / fx, y);
-    }
+    for (size_t i = 0; i < pixels.size(); ++i)
+        k.apply(pixels[i].x, pixels[i].y, out[i].x, out[i].y);
     return out;
 }
 
@@ -92,23 +115,6 @@ void checkNormalisedPoints(const std::vector<Point2d>& normalised, const char* n
 }
 
 namespace {
-
-/** K^-1 for an upper-triangular K with K(2,2) = 1, as normalisePoints computes it (the same
-operations, so the same values). */
-struct Normalisation
-{
-    double fx, fy, s, cx, cy;
-
-    /** Writes the normalised point; returns 1 if a coordinate is not finite or beyond
-    kMaxNormalised (as every non-finite pixel coordinate makes one: fx and fy are finite and
-    positive), else 0. */
-    int apply(double u, double v, double& x, double& y) const
-    {
-        y = (v - cy) / fy;
-        x = (u - cx - s * y) / fx;
-        return !(std::abs(x) <= kMaxNormalised) | !(std::abs(y) <= kMaxNormalised);
-    }
-};
 
 /** normalisedProblem's pass over one array: `n` rows of `stride` doubles (x, y first) into x / y;
 returns how many points are out of range. Counted, not branched on, so that the loop has no early
@@ -130,7 +136,7 @@ ESSENTIAL_AVX2_CLONES int normaliseRows(const Normalisation& k, const double* r,
 bool normaliseRows(const Mat& rows, const Matx33d& K, double* x, double* y)
 {
     if (rows.rows == 0) return true;
-    const Normalisation k{K(0, 0), K(1, 1), K(0, 1), K(0, 2), K(1, 2)};
+    const Normalisation k(K);
     return normaliseRows(k, rows.ptr<double>(0), rows.step1(), rows.rows, x, y) == 0;
 }
 
@@ -149,9 +155,9 @@ Problem normalisedProblem(const Mat& rows1, const Mat& rows2, const Matx33d& K, 
     if (rows1.rows >= minPoints && normaliseRows(rows1, K, p.x1.data(), p.y1.data()) &&
         normaliseRows(rows2, K, p.x2.data(), p.y2.data()))
         return p;
-    // A check fails: the step-by-step path throws its exception. (It returns only if the two
-    // paths round a coordinate at the kMaxNormalised bound differently, which a compiler that
-    // contracts one expression into a fused multiply-add and not the other could do.)
+    // A check fails: the step-by-step path throws its exception. (Both paths normalise with
+    // Normalisation::apply; should a compiler still round one inlined copy differently at the
+    // kMaxNormalised bound, this path returns the Problem it checked.)
     const std::vector<Point2d> p1 = pointsFromRows(rows1, "points1");
     const std::vector<Point2d> p2 = pointsFromRows(rows2, "points2");
     checkPointSets(p1, p2, minPoints);

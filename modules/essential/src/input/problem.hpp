@@ -30,10 +30,10 @@ struct InlierTest
     InlierTest withThreshold(double t) const { return InlierTest{t, distance}; }
 };
 
-/** std::allocator, except that resize() leaves new doubles uninitialised instead of zeroing them:
-every Problem's arrays are written in full right after they are sized (a call sizes several, and
-its local optimisation resizes a subset per new best model), so the zeroing would be wasted
-stores. */
+/** std::allocator, except that resize() leaves new elements uninitialised instead of zeroing them:
+for arrays written in full right after they are sized (every Problem's coordinates: a call sizes
+several, and its local optimisation resizes a subset per new best model; scratch index and
+distance lists), where the zeroing would be wasted stores. */
 template <class T> struct UninitialisedAllocator : std::allocator<T>
 {
     template <class U> struct rebind

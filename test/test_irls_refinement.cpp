@@ -90,6 +90,7 @@ TEST(IrlsRefinement, TukeyLossIgnoresThePointsBeyondItsScale)
     tukey.loss = cv::essential::refine::RobustLoss::Tukey;
     tukey.maxIterations = 30;
     tukey.relativeTolerance = 0.0; // the full cap: both runs stop at their minimum
+    tukey.predictedTolerance = 0.0;
     cv::essential::refine::IrlsSettings cauchy = tukey;
     cauchy.loss = cv::essential::refine::RobustLoss::Cauchy;
     for (uint64_t seed = 1; seed <= 10; ++seed) {

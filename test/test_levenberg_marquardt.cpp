@@ -254,6 +254,124 @@ TEST(LevenbergMarquardt, StopsOnASmallRelativeDecrease)
     EXPECT_LT(stopped.cost, stopped.initialCost);
 }
 
+TEST(LevenbergMarquardt, PredictedDecreaseIsExactForALinearModel)
+{
+    // For linear residuals the linearisation is the model itself: the predicted decrease of any
+    // step equals the cost's true decrease, in both systems' cost conventions (|r|^2 for the
+    // square system, sum r^2 / 2 for the normal equations), to rounding.
+    const Linear residuals;
+    Point5 x;
+    x.v << 0.3, -1.0, 2.0, 0.7, -0.2;
+    Vector5 step;
+    step << 0.5, 0.25, -1.5, 1.0, -0.75;
+    Vector5 r0, r1;
+    Matrix5 J;
+    residuals(x.v, r0, &J);
+    residuals(x.v + step, r1, nullptr);
+    SquareSystem square;
+    square.write([&](Vector5& r, Matrix5& Jw) {
+        r = r0;
+        Jw = J;
+        return r.squaredNorm();
+    });
+    const double squareDecrease = r0.squaredNorm() - r1.squaredNorm();
+    EXPECT_NEAR(square.predictedDecrease(step), squareDecrease, 1e-12 * r0.squaredNorm());
+    NormalEquations normal;
+    normal.A = J.transpose() * J;
+    normal.g = J.transpose() * r0;
+    EXPECT_NEAR(normal.predictedDecrease(step), 0.5 * squareDecrease, 1e-12 * r0.squaredNorm());
+    // Towards the minimum the prediction is positive, away from it negative.
+    Vector5 toMinimum;
+    ASSERT_TRUE(normal.solve(0.0, toMinimum));
+    EXPECT_GT(normal.predictedDecrease(toMinimum), 0.0);
+    EXPECT_LT(normal.predictedDecrease(-toMinimum), 0.0);
+}
+
+/** Least squares with a residual left at the minimum: y = p0 exp(p1 t) + p2 sin(p3 t) + p4 fitted
+to 20 samples of such a curve with a deterministic perturbation, through the normal equations
+(cost sum r^2 / 2). Counts its evaluations. */
+struct CurveFit
+{
+    static constexpr bool kCostWithEquations = false;
+    mutable int linearisations = 0;
+    mutable int costs = 0;
+
+    static double sampleAt(int k) { return 0.1 * k; }
+    static double observed(int k)
+    {
+        const double t = sampleAt(k);
+        return 1.5 * std::exp(-0.8 * t) + 0.5 * std::sin(2.0 * t) + 0.2 + 0.01 * std::cos(7.0 * k);
+    }
+    static double residual(const Vector5& p, int k, double* J)
+    {
+        const double t = sampleAt(k), e = std::exp(p[1] * t), s = std::sin(p[3] * t);
+        if (J) {
+            J[0] = e;
+            J[1] = p[0] * t * e;
+            J[2] = s;
+            J[3] = p[2] * t * std::cos(p[3] * t);
+            J[4] = 1.0;
+        }
+        return p[0] * e + p[2] * s + p[4] - observed(k);
+    }
+    double linearise(const Point5& x, NormalEquations& system) const
+    {
+        ++linearisations;
+        system.A.setZero();
+        system.g.setZero();
+        double c = 0.0;
+        for (int k = 0; k < 20; ++k) {
+            double J[5];
+            const double r = residual(x.v, k, J);
+            const Eigen::Map<const Vector5> j(J);
+            system.A += j * j.transpose();
+            system.g += r * j;
+            c += 0.5 * r * r;
+        }
+        return c;
+    }
+    double cost(const Point5& x) const
+    {
+        ++costs;
+        double c = 0.0;
+        for (int k = 0; k < 20; ++k) {
+            const double r = residual(x.v, k, nullptr);
+            c += 0.5 * r * r;
+        }
+        return c;
+    }
+};
+
+TEST(LevenbergMarquardt, StopsBeforeAStepPredictedToGainLittle)
+{
+    // With predictedTolerance the run ends at the first step the linearisation predicts to lower
+    // the cost by less than that fraction of it, without evaluating the step: fewer evaluations,
+    // every one counted as a trial, and a cost above the minimum's by about that fraction (near
+    // the minimum the linearisation is close to exact).
+    LmSettings s;
+    s.maxIterations = 200;
+    s.damping.attempts = 10;
+    auto run = [&](double tolerance, Point5& x, const CurveFit& model) {
+        x.v << 1.0, -0.5, 0.3, 1.8, 0.0;
+        NormalEquations system;
+        s.predictedTolerance = tolerance;
+        return minimise(model, x, system, s);
+    };
+    Point5 full, early;
+    const CurveFit fullModel, earlyModel;
+    const double tolerance = 1e-6;
+    const LmResult toMinimum = run(0.0, full, fullModel);
+    const LmResult stopped = run(tolerance, early, earlyModel);
+    ASSERT_EQ(toMinimum.status, LmStatus::Stalled);
+    ASSERT_GT(toMinimum.cost, 1e-5); // a residual is left: the relative rule has a scale
+    EXPECT_EQ(stopped.status, LmStatus::Stalled);
+    EXPECT_LT(earlyModel.costs, fullModel.costs);
+    EXPECT_EQ(earlyModel.costs, stopped.trials);
+    EXPECT_GE(stopped.cost, toMinimum.cost);
+    EXPECT_LT(stopped.cost, toMinimum.cost * (1.0 + 2.0 * tolerance));
+    EXPECT_LT(stopped.cost, stopped.initialCost);
+}
+
 TEST(LevenbergMarquardt, EachWayOfStoppingOnRejections)
 {
     const RejectEverything model;

@@ -42,6 +42,13 @@ struct NormalEquations
         if (!solveCholesky<5>(damped, -g, step)) step = damped.ldlt().solve(-g);
         return step.allFinite();
     }
+
+    /** The decrease of the cost the linearisation predicts for `step`, for a cost whose quadratic
+model is c - (-g.d - d^T A d / 2) (sum w r^2 / 2 for A = sum w J J^T, g = sum w r J). */
+    double predictedDecrease(const Vector5& step) const
+    {
+        return -g.dot(step) - 0.5 * step.dot(A * step);
+    }
 };
 
 /** The square system of a minimal problem, five residuals r and their 5x5 Jacobian J. Undamped
@@ -67,6 +74,14 @@ public:
             normalFormed_ = true;
         }
         return normal_.solve(lambda, step);
+    }
+
+    /** The decrease of the cost |r|^2 (the minimal problems' cost) the linearisation predicts for
+    `step`: |r|^2 - |r + J d|^2. */
+    double predictedDecrease(const Vector5& step) const
+    {
+        const Vector5 Jd = J_ * step;
+        return -2.0 * r_.dot(Jd) - Jd.squaredNorm();
     }
 
 private:
@@ -103,6 +118,9 @@ struct LmSettings
     double stopCost = 0.0;
     /** LM: stop once an accepted step lowers the cost by less than this fraction of it. */
     double relativeTolerance = 0.0;
+    /** LM: stop, without evaluating it, when the first trial step of an iteration is predicted by
+    the linearisation to lower the cost by less than this fraction of it; 0: never. */
+    double predictedTolerance = 0.0;
     /** Gauss-Newton: a cost beyond this times the previous one ends the run (Diverged). */
     double divergenceFactor = HUGE_VAL;
 };
@@ -127,8 +145,9 @@ struct LmResult
 };
 
 /** What a damped iteration did: a step accepted; every attempt rejected; rejected until the run's
-trial cap stopped it (LmSettings::maxTrials); a singular system; lambda past its ceiling. */
-enum class StepOutcome { Accepted, Rejected, TrialCap, Singular, DampingLimit };
+trial cap stopped it (LmSettings::maxTrials); a singular system; lambda past its ceiling; its first
+step predicted to lower the cost by less than `stopBelow` (not evaluated). */
+enum class StepOutcome { Accepted, Rejected, TrialCap, Singular, DampingLimit, PredictedSmall };
 
 /** One LM iteration at the linearisation `system` of `x`, whose cost is `cost`: up to
 damping.attempts trial steps, the first that lowers the cost accepted (x, cost updated). With
@@ -142,7 +161,8 @@ The Model: `double linearise(const Params&, System&)` (the cost, and the system 
 template <class Model, class Params, class System>
 inline StepOutcome dampedIteration(Model& model, Params& x, System& system, System& trialSystem,
                                    double& cost, double& lambda, const Damping& damping,
-                                   LmResult& counts, int maxTrials, bool& systemCurrent)
+                                   LmResult& counts, int maxTrials, bool& systemCurrent,
+                                   double stopBelow = 0.0)
 {
     systemCurrent = true;
     for (int attempt = 0; attempt < damping.attempts; ++attempt) {
@@ -150,6 +170,10 @@ inline StepOutcome dampedIteration(Model& model, Params& x, System& system, Syst
         ++counts.trials;
         Vector5 step;
         if (!system.solve(lambda, step)) return StepOutcome::Singular;
+        if (attempt == 0 && stopBelow > 0.0 && system.predictedDecrease(step) < stopBelow) {
+            --counts.trials; // not a trial: the step is never evaluated
+            return StepOutcome::PredictedSmall;
+        }
         Params trial = x;
         trial.update(step);
         const bool withSystem = Model::kCostWithEquations && attempt == 0;
@@ -243,7 +267,7 @@ inline LmResult minimise(Model& model, Params& x, System& system, const LmSettin
         bool systemCurrent = true;
         const StepOutcome outcome =
             dampedIteration(model, x, system, trialSystem, cost, lambda, settings.damping, result,
-                            settings.maxTrials, systemCurrent);
+                            settings.maxTrials, systemCurrent, settings.predictedTolerance * cost);
         result.cost = cost;
         if (outcome == StepOutcome::Singular || outcome == StepOutcome::DampingLimit) {
             result.status =
@@ -251,7 +275,7 @@ inline LmResult minimise(Model& model, Params& x, System& system, const LmSettin
             return result;
         }
         if (outcome == StepOutcome::TrialCap) break;
-        if (outcome == StepOutcome::Rejected) {
+        if (outcome == StepOutcome::Rejected || outcome == StepOutcome::PredictedSmall) {
             result.status = LmStatus::Stalled;
             return result;
         }

@@ -251,6 +251,7 @@ IrlsResult refineIrls(const Problem& problem, const Matx33d& E0, double scale,
     lm.damping.floor = 1e-12;
     lm.damping.attempts = 6;
     lm.relativeTolerance = settings.relativeTolerance;
+    lm.predictedTolerance = settings.predictedTolerance;
     const SampsonModel model{problem, scale * scale, settings.loss};
     optim::NormalEquations system;
     const optim::LmResult outcome = optim::minimise(model, pose, system, lm);

@@ -43,8 +43,8 @@ struct NormalEquations
         return step.allFinite();
     }
 
-    /** The decrease of the cost the linearisation predicts for `step`, for a cost whose quadratic
-model is c - (-g.d - d^T A d / 2) (sum w r^2 / 2 for A = sum w J J^T, g = sum w r J). */
+    /** The decrease of the cost the linearisation predicts for `step`, -g.d - d^T A d / 2: the
+    cost sum w r^2 / 2 of A = sum w J J^T, g = sum w r J. */
     double predictedDecrease(const Vector5& step) const
     {
         return -g.dot(step) - 0.5 * step.dot(A * step);

@@ -32,14 +32,15 @@ struct IrlsSettings
     /** Stop when an accepted step lowers the robust cost by less than this fraction (see above). */
     double relativeTolerance = 1e-6;
     /** Stop, before evaluating it, at a step the linearisation predicts to lower the robust cost
-by less than this fraction of it: the relative rule above needed one more evaluation to see the
-same small decrease. Relative, not in units of the scale, so that on noise-free inliers (the cost
-going to the outliers' constant part) the minimum is still reached to rounding (an absolute
-1e-5 scale^2 stopped 1e-6 short of the true E there, and a least-squares run at a large scale
-after one step). Measured (docs/TUNING.md, "IRLS cap"): the final refinement's evaluations at 90%
-inliers 5.5 -> 3.9 a call, the drop-in's instructions 0.94 of before at 90%, pose errors unchanged
-on 300 scenes at 90 / 50 / 30% (mean 0.060 / 0.078 / 0.117 degrees), the real pairs' AUC@5/10/20
-unchanged to 1e-4 over four seeds (1e-6: 0.97 of the instructions). 0: the relative rule alone. */
+    by less than this fraction of it: the relative rule above needed one more evaluation to see the
+    same small decrease. Relative, not in units of the scale, so that on noise-free inliers (the
+    cost going to the outliers' constant part) the minimum is still reached to rounding (an absolute
+    1e-5 scale^2 stopped 1e-6 short of the true E there, and a least-squares run at a large scale
+    after one step). Measured (docs/TUNING.md, "IRLS cap"): the final refinement's evaluations at
+    90% inliers 5.5 -> 3.9 a call, the drop-in's instructions 0.94 of before at 90%, pose errors
+    unchanged on 300 scenes at 90 / 50 / 30% (mean 0.060 / 0.078 / 0.117 degrees), the real pairs'
+    AUC@5/10/20 unchanged to 1e-4 over four seeds (1e-6: 0.97 of the instructions). 0: the relative
+    rule alone. */
     double predictedTolerance = 1e-5;
 };
 

@@ -424,7 +424,9 @@ protected:
         return e;
     }
     /** The UsacParams overload agrees with its documented equivalent (the two normalise the points
-    by different routes, so agreement is to round-off, not bitwise). */
+    by different routes, so agreement is to round-off, not bitwise; round-off can also end an IRLS
+    one step apart, as its stop is predicted at 1e-5 of the cost: measured up to 2.4e-6 under the
+    sanitizers' build, 6e-16 in Release; a wrong mapping moves E by the search's spread, ~1e-3). */
     void expectEquivalent(const cv::UsacParams& p) const
     {
         cv::Mat maskUsac, maskParams;
@@ -433,7 +435,7 @@ protected:
                                                               equivalent(p), maskParams);
         ASSERT_FALSE(a.empty());
         ASSERT_FALSE(b.empty());
-        EXPECT_LT(essential_test::essentialDistance(cv::Matx33d(a), cv::Matx33d(b)), 1e-6);
+        EXPECT_LT(essential_test::essentialDistance(cv::Matx33d(a), cv::Matx33d(b)), 1e-5);
         EXPECT_LE(cv::norm(maskUsac, maskParams, cv::NORM_L1), 2.0);
     }
     SyntheticScene s;
@@ -542,7 +544,13 @@ TEST_F(UsacParamsTest, FinalPolisherSwitchesTheFinalRefinement)
 {
 #if CV_VERSION_MAJOR > 4 || (CV_VERSION_MAJOR == 4 && CV_VERSION_MINOR >= 7)
     cv::Mat m1, m2;
-    cv::UsacParams p = usac;
+    // Without local optimisation, so that the final refinement has something to do: after the
+    // fixture's polish on all points its first step is predicted to gain less than its stopping
+    // tolerance and E stays the search's (measured on this scene: refined against unrefined 0 with
+    // that polish, 0.003 without it).
+    cv::UsacParams base = usac;
+    base.loMethod = cv::LOCAL_OPTIM_NULL;
+    cv::UsacParams p = base;
     ASSERT_EQ(p.final_polisher, cv::COV_POLISHER); // OpenCV's default
     const cv::Mat polished = runUsac(p, m1);
     expectEquivalent(p); // refine = true, the module's default
@@ -561,7 +569,7 @@ TEST_F(UsacParamsTest, FinalPolisherSwitchesTheFinalRefinement)
     ASSERT_FALSE(none.empty());
     EXPECT_LT(essential_test::essentialDistance(cv::Matx33d(none), cv::Matx33d(expected)), 1e-6);
     EXPECT_GT(essential_test::essentialDistance(cv::Matx33d(none), cv::Matx33d(polished)), 0.0);
-    p = usac;
+    p = base;
     p.final_polisher_iterations = 0;
     EXPECT_TRUE(sameMat(runUsac(p, m2), none));
     // Invalid values are refused by name.

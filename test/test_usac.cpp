@@ -426,7 +426,7 @@ protected:
     /** The UsacParams overload agrees with its documented equivalent (the two normalise the points
     by different routes, so agreement is to round-off, not bitwise; round-off can also end an IRLS
     one step apart, as its stop is predicted at 1e-5 of the cost: measured up to 2.4e-6 under the
-    sanitizers' build, 6e-16 in Release; a wrong mapping moves E by the search's spread, ~1e-3). */
+    sanitizers' build, 3.3e-15 in Release; a wrong mapping moves E by the search's spread, 1e-3). */
     void expectEquivalent(const cv::UsacParams& p) const
     {
         cv::Mat maskUsac, maskParams;

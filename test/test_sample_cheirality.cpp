@@ -11,6 +11,8 @@
 #include "essential_test.hpp"
 #include "synthetic_scene.hpp"
 
+#include <opencv2/calib3d.hpp>
+
 #include <limits>
 #include <random>
 #include <vector>
@@ -118,6 +120,87 @@ TEST(SampleCheirality, RandomModelsAreMostlyRejected)
         if (!essentialSampleIsInFront(E, a.data(), b.data(), 5)) ++rejected;
     }
     EXPECT_GT(rejected, trials / 2);
+}
+
+/** Depth signs of one correspondence under (R, t) by a different route from the check's: the
+least-squares depths of lambda2 q2 = lambda1 R q1 + t (exact for a correspondence on the epipolar
+geometry of [t]x R). Returns +1 (both positive), -1 (both negative), 0 (mixed) or 2 (parallax below
+the check's limit: undecided); `margin` is set when the point is within 1% of that limit or a depth
+is within 1e-9 of zero, where round-off may decide either way. */
+int referenceSigns(const cv::Matx33d& R, const cv::Vec3d& t, const cv::Point2d& p1,
+                   const cv::Point2d& p2, bool& margin)
+{
+    const cv::Vec3d a = R * cv::Vec3d(p1.x, p1.y, 1.0), b(p2.x, p2.y, 1.0);
+    const double sine = cv::norm(a.cross(b)) / (cv::norm(a) * cv::norm(b));
+    const double limit = cv::essential::solvers::kMinCheiralityParallax;
+    // [a, -b] (lambda1, lambda2)^T = -t by the normal equations.
+    const double aa = a.dot(a), ab = a.dot(b), bb = b.dot(b), det = aa * bb - ab * ab;
+    const double l1 = (-t.dot(a) * bb + ab * t.dot(b)) / det;
+    const double l2 = (aa * t.dot(b) + ab * (-t.dot(a))) / det;
+    margin |= std::abs(sine - limit) < 0.01 * limit || std::abs(l1) < 1e-9 || std::abs(l2) < 1e-9;
+    if (sine <= limit) return 2;
+    if (l1 > 0 && l2 > 0) return 1;
+    if (l1 < 0 && l2 < 0) return -1;
+    return 0;
+}
+
+TEST(SampleCheirality, EqualsTheFourPosesOfOpenCvDecomposition)
+{
+    // The check derives the four poses' depth signs from dot products of one rotated ray a point
+    // (sample_cheirality.hpp). Reference: cv::decomposeEssentialMat's rotations and translation,
+    // and each point's least-squares depths under each of the four poses. Points are placed on the
+    // epipolar geometry with random depth signs in either view, so every outcome occurs; some sit
+    // near the epipole or at infinity (parallax below the limit), where the point must not count.
+    std::mt19937_64 g(2024);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    int compared = 0, agreed = 0, inFront = 0;
+    for (int trial = 0; trial < 20000; ++trial) {
+        const cv::Matx33d R = essential_test::axisAngle(essential_test::randomUnit(g),
+                                                        CV_PI * std::abs(u(g)));
+        const cv::Vec3d t = essential_test::randomUnit(g);
+        const int n = 2 + trial % 9;
+        std::vector<cv::Point2d> a, b;
+        const bool allFront = trial % 3 == 0; // a third of the samples fully in front of (R, t)
+        for (int i = 0; i < n; ++i) {
+            const double depth = (allFront || u(g) > -0.6 ? 1.0 : -1.0) * (0.5 + 4.0 * std::abs(u(g)));
+            const cv::Vec3d X1(u(g) * depth, u(g) * depth, depth);
+            // Far points (depth 1e4) have parallax below the limit.
+            const cv::Vec3d X = trial % 7 == 0 && i == 0 ? X1 * 1e4 : X1;
+            const cv::Vec3d X2 = R * X + t;
+            if (allFront && X2[2] <= 0) continue;
+            a.emplace_back(X[0] / X[2], X[1] / X[2]);
+            b.emplace_back(X2[0] / X2[2], X2[1] / X2[2]);
+        }
+        if (a.empty()) continue;
+        const cv::Matx33d E = skewMatrix(t) * R;
+        cv::Mat R1, R2, tt;
+        cv::decomposeEssentialMat(E, R1, R2, tt);
+        const cv::Matx33d rotations[2] = {cv::Matx33d(R1), cv::Matx33d(R2)};
+        const cv::Vec3d t0(tt.at<double>(0), tt.at<double>(1), tt.at<double>(2));
+        bool expected = false, margin = false;
+        for (const auto& Ri : rotations)
+            for (double sign : {1.0, -1.0}) {
+                bool ok = true;
+                for (size_t i = 0; i < a.size(); ++i) {
+                    const int v = referenceSigns(Ri, sign * t0, a[i], b[i], margin);
+                    ok &= v == 1 || v == 2;
+                }
+                expected |= ok;
+            }
+        if (margin) continue;
+        ++compared;
+        inFront += expected;
+        const double scale = trial % 2 ? 1.0 : -2.5; // any scale and sign of E
+        const bool got = essentialSampleIsInFront(scale * E, a.data(), b.data(),
+                                                  static_cast<int>(a.size()));
+        agreed += got == expected;
+        if (got != expected) ADD_FAILURE() << "trial " << trial << ": expected " << expected;
+    }
+    EXPECT_GT(compared, 18000);
+    EXPECT_EQ(agreed, compared);
+    // Both outcomes are well represented.
+    EXPECT_GT(inFront, compared / 4);
+    EXPECT_LT(inFront, compared * 3 / 4);
 }
 
 TEST(CandidatePool, KeepsTheCheapestDistinctModels)

@@ -13,6 +13,7 @@
 
 #include <opencv2/core.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace cv {
@@ -26,34 +27,47 @@ constexpr double kMinCheiralityParallax = 3e-3;
 
 namespace detail {
 
-/** Depth signs of the sample points under the rotation R and translation t (X2 = R X1 + t):
-`front` when every decided point has positive depths in both views, `back` when every decided
-point has negative ones (then -t puts them in front). */
-inline void depthSigns(const Eigen::Matrix3d& R, const Eigen::Vector3d& t, const Point2d* x1,
-                       const Point2d* x2, int n, bool& front, bool& back)
-{
-    front = back = true;
-    for (int i = 0; i < n && (front || back); ++i) {
-        const Eigen::Vector3d a = R * Eigen::Vector3d(x1[i].x, x1[i].y, 1.0);
-        const Eigen::Vector3d q2(x2[i].x, x2[i].y, 1.0);
-        double depth1, depth2;
-        if (!geometry::scaledDepths(a, q2, t, kMinCheiralityParallax, depth1, depth2)) continue;
-        front &= depth1 > 0.0 && depth2 > 0.0;
-        back &= depth1 < 0.0 && depth2 < 0.0;
-    }
-}
-
 /** Whether one of the four poses (R, +-t), (R', +-t), with R' = (2 t t^T - I) R the twisted pair
-and t a unit vector, puts every decided sample point in front of both cameras. */
+and t a unit vector, puts every decided sample point in front of both cameras.
+
+The four poses are tested in one pass over the points, from five dot products of a point: with
+a = R q1, geometry::scaledDepths' cross products expand (Lagrange's identity) to
+  depth1 = (q2.a)(t.q2) - |q2|^2 (t.a),  depth2 = |a|^2 (t.q2) - (q2.a)(t.a),
+  |q2 x a|^2 = |q2|^2 |a|^2 - (q2.a)^2.
+Negating t negates both depths, so (R, -t) holds exactly when every decided point has two negative
+depths under (R, t). The twisted ray a' = R' q1 = 2 (t.a) t - a has |a'| = |a|, t.a' = t.a and
+q2.a' = 2 (t.a)(t.q2) - q2.a, so its depths follow from the same five numbers. The loop ends as
+soon as no pose is left. */
 inline bool anyPoseInFront(const Eigen::Matrix3d& R, const Eigen::Vector3d& t, const Point2d* x1,
                            const Point2d* x2, int n)
 {
-    bool front, back;
-    depthSigns(R, t, x1, x2, n, front, back);
-    if (front || back) return true;
-    const Eigen::Matrix3d twisted = (2.0 * t * t.transpose() - Eigen::Matrix3d::Identity()) * R;
-    depthSigns(twisted, t, x1, x2, n, front, back);
-    return front || back;
+    const double minParallax2 = kMinCheiralityParallax * kMinCheiralityParallax;
+    const double tx = t.x(), ty = t.y(), tz = t.z();
+    bool front = true, back = true, twistedFront = true, twistedBack = true;
+    for (int i = 0; i < n && (front || back || twistedFront || twistedBack); ++i) {
+        const double p = x1[i].x, q = x1[i].y, bx = x2[i].x, by = x2[i].y;
+        const double ax = R(0, 0) * p + R(0, 1) * q + R(0, 2);
+        const double ay = R(1, 0) * p + R(1, 1) * q + R(1, 2);
+        const double az = R(2, 0) * p + R(2, 1) * q + R(2, 2);
+        const double aa = ax * ax + ay * ay + az * az;
+        const double qq = bx * bx + by * by + 1.0;
+        const double qa = bx * ax + by * ay + az;
+        const double ta = tx * ax + ty * ay + tz * az;
+        const double tq = tx * bx + ty * by + tz;
+        const double limit = minParallax2 * aa * qq;
+        if (qq * aa - qa * qa > limit) {
+            const double depth1 = qa * tq - qq * ta, depth2 = aa * tq - qa * ta;
+            front &= depth1 > 0.0 && depth2 > 0.0;
+            back &= depth1 < 0.0 && depth2 < 0.0;
+        }
+        const double qaTwisted = 2.0 * ta * tq - qa;
+        if (qq * aa - qaTwisted * qaTwisted > limit) {
+            const double depth1 = qaTwisted * tq - qq * ta, depth2 = aa * tq - qaTwisted * ta;
+            twistedFront &= depth1 > 0.0 && depth2 > 0.0;
+            twistedBack &= depth1 < 0.0 && depth2 < 0.0;
+        }
+    }
+    return front || back || twistedFront || twistedBack;
 }
 
 } // namespace detail
@@ -75,31 +89,53 @@ of mixed samples that fit a wrong epipolar geometry with support (on a real pair
 238 of 281 matches within 1 px, the best of its four poses had 42 of them in front). */
 inline bool essentialSampleIsInFront(const Matx33d& E, const Point2d* x1, const Point2d* x2, int n)
 {
-    Eigen::Matrix3d e;
-    for (int r = 0; r < 3; ++r)
-        for (int c = 0; c < 3; ++c)
-            e(r, c) = E(r, c);
+    const double* e = E.val; // row-major: e[3 r + c]
     // t spans the left null space of E = [t]x R, orthogonal to every column: the largest cross
     // product of two columns is the best conditioned estimate of it.
-    Eigen::Vector3d t = e.col(0).cross(e.col(1));
-    const Eigen::Vector3d t12 = e.col(1).cross(e.col(2)), t20 = e.col(2).cross(e.col(0));
-    if (t12.squaredNorm() > t.squaredNorm()) t = t12;
-    if (t20.squaredNorm() > t.squaredNorm()) t = t20;
-    const double tn = t.norm(), en = e.norm();
+    auto columnCross = [e](int i, int j, double v[3]) {
+        v[0] = e[3 + i] * e[6 + j] - e[6 + i] * e[3 + j];
+        v[1] = e[6 + i] * e[j] - e[i] * e[6 + j];
+        v[2] = e[i] * e[3 + j] - e[3 + i] * e[j];
+        return v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+    };
+    double t[3], other[3];
+    double t2 = columnCross(0, 1, t);
+    for (int k = 1; k < 3; ++k) {
+        const double o2 = columnCross(k, (k + 1) % 3, other);
+        if (o2 > t2) {
+            t2 = o2;
+            std::copy(other, other + 3, t);
+        }
+    }
+    double e2 = 0.0;
+    for (int k = 0; k < 9; ++k)
+        e2 += e[k] * e[k];
+    const double tn = std::sqrt(t2), en = std::sqrt(e2);
     if (!(tn > 0.0) || !(en > 0.0) || !std::isfinite(tn) || !std::isfinite(en)) return false;
-    t /= tn;
+    for (double& v : t)
+        v /= tn;
     // With E / s = [t]x R (s = |E|_F / sqrt(2), up to sign), R = cof(E / s) - [t]x (E / s): the
     // cofactor matrix of [t]x R is t t^T R and -[t]x [t]x R = (I - t t^T) R. A sign flip of E
     // gives the twisted rotation, which anyPoseInFront tries as well. A closed form rather than
     // geometry::decomposeEssential's SVD, because this runs on every root before it is scored.
-    const Eigen::Matrix3d es = e * (std::sqrt(2.0) / en);
-    Eigen::Matrix3d cof;
-    cof.row(0) = es.row(1).cross(es.row(2));
-    cof.row(1) = es.row(2).cross(es.row(0));
-    cof.row(2) = es.row(0).cross(es.row(1));
-    Eigen::Matrix3d tx;
-    tx << 0.0, -t.z(), t.y(), t.z(), 0.0, -t.x(), -t.y(), t.x(), 0.0;
-    return detail::anyPoseInFront(cof - tx * es, t, x1, x2, n);
+    const double scale = std::sqrt(2.0) / en;
+    double es[9];
+    for (int k = 0; k < 9; ++k)
+        es[k] = e[k] * scale;
+    Eigen::Matrix3d R;
+    for (int r = 0; r < 3; ++r) {
+        const double* a = es + 3 * ((r + 1) % 3);
+        const double* b = es + 3 * ((r + 2) % 3);
+        R(r, 0) = a[1] * b[2] - a[2] * b[1];
+        R(r, 1) = a[2] * b[0] - a[0] * b[2];
+        R(r, 2) = a[0] * b[1] - a[1] * b[0];
+    }
+    for (int c = 0; c < 3; ++c) { // minus t x (column c of E / s)
+        R(0, c) -= t[1] * es[6 + c] - t[2] * es[3 + c];
+        R(1, c) -= t[2] * es[c] - t[0] * es[6 + c];
+        R(2, c) -= t[0] * es[3 + c] - t[1] * es[c];
+    }
+    return detail::anyPoseInFront(R, Eigen::Vector3d(t[0], t[1], t[2]), x1, x2, n);
 }
 
 /** Keeps, in order, the first `count` solutions that pass essentialSampleIsInFront on the sample;

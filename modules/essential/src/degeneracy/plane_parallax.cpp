@@ -4,6 +4,7 @@
 #include "degeneracy/plane_parallax.hpp"
 
 #include "geometry/essential_decomposition.hpp"
+#include "optim/small_linear_solve.hpp"
 #include "refine/irls_refinement.hpp"
 #include "sampling/uniform_sampler.hpp"
 
@@ -86,24 +87,24 @@ bool transfersWithin(const Matx33d& H, const Point2d& a, const Point2d& b, doubl
     return dx * dx + dy * dy <= band * band;
 }
 
-/** The homography through four correspondences (h33 = 1; 8 x 8 linear system). False when the
-points are degenerate (three collinear). */
+/** The homography through four correspondences (h33 = 1; 8 x 8 linear system, solved in fixed
+size: cv::solve converts its arguments to cv::Mat and allocates, about nine tenths of a probe's
+cost, and the probes run on every call below kMaxCheckedInlierRatio). False when the system is
+singular to working precision or its solution not finite (three of the points collinear, exactly
+or so nearly that the homography overflows); a homography of nearly collinear points that survives
+is extreme and explains no probe points. */
 bool homographyOf4(const Point2d* a, const Point2d* b, Matx33d& H)
 {
-    Matx<double, 8, 8> A;
-    Vec<double, 8> rhs, h;
+    Eigen::Matrix<double, 8, 8> A;
+    Eigen::Matrix<double, 8, 1> rhs, h;
     for (int i = 0; i < 4; ++i) {
         const double x = a[i].x, y = a[i].y, u = b[i].x, v = b[i].y;
-        const double r0[8] = {x, y, 1, 0, 0, 0, -u * x, -u * y};
-        const double r1[8] = {0, 0, 0, x, y, 1, -v * x, -v * y};
-        for (int j = 0; j < 8; ++j) {
-            A(2 * i, j) = r0[j];
-            A(2 * i + 1, j) = r1[j];
-        }
+        A.row(2 * i) << x, y, 1, 0, 0, 0, -u * x, -u * y;
+        A.row(2 * i + 1) << 0, 0, 0, x, y, 1, -v * x, -v * y;
         rhs[2 * i] = u;
         rhs[2 * i + 1] = v;
     }
-    if (!solve(A, rhs, h, DECOMP_LU)) return false;
+    if (!optim::solvePartialPivot<8>(A, rhs, h)) return false;
     H = Matx33d(h[0], h[1], h[2], h[3], h[4], h[5], h[6], h[7], 1.0);
     return true;
 }

@@ -155,14 +155,15 @@ TEST(SampleCheirality, EqualsTheFourPosesOfOpenCvDecomposition)
     std::uniform_real_distribution<double> u(-1.0, 1.0);
     int compared = 0, agreed = 0, inFront = 0;
     for (int trial = 0; trial < 20000; ++trial) {
-        const cv::Matx33d R = essential_test::axisAngle(essential_test::randomUnit(g),
-                                                        CV_PI * std::abs(u(g)));
+        const cv::Matx33d R =
+            essential_test::axisAngle(essential_test::randomUnit(g), CV_PI * std::abs(u(g)));
         const cv::Vec3d t = essential_test::randomUnit(g);
         const int n = 2 + trial % 9;
         std::vector<cv::Point2d> a, b;
         const bool allFront = trial % 3 == 0; // a third of the samples fully in front of (R, t)
         for (int i = 0; i < n; ++i) {
-            const double depth = (allFront || u(g) > -0.6 ? 1.0 : -1.0) * (0.5 + 4.0 * std::abs(u(g)));
+            const double depth =
+                (allFront || u(g) > -0.6 ? 1.0 : -1.0) * (0.5 + 4.0 * std::abs(u(g)));
             const cv::Vec3d X1(u(g) * depth, u(g) * depth, depth);
             // Far points (depth 1e4) have parallax below the limit.
             const cv::Vec3d X = trial % 7 == 0 && i == 0 ? X1 * 1e4 : X1;
@@ -191,8 +192,8 @@ TEST(SampleCheirality, EqualsTheFourPosesOfOpenCvDecomposition)
         ++compared;
         inFront += expected;
         const double scale = trial % 2 ? 1.0 : -2.5; // any scale and sign of E
-        const bool got = essentialSampleIsInFront(scale * E, a.data(), b.data(),
-                                                  static_cast<int>(a.size()));
+        const bool got =
+            essentialSampleIsInFront(scale * E, a.data(), b.data(), static_cast<int>(a.size()));
         agreed += got == expected;
         if (got != expected) ADD_FAILURE() << "trial " << trial << ": expected " << expected;
     }

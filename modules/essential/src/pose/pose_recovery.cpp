@@ -33,9 +33,10 @@ namespace {
 /** Bits of the four candidates, in the order cv::recoverPose tries them. */
 constexpr int kR1Plus = 1, kR2Plus = 2, kR1Minus = 4, kR2Minus = 8;
 
-/** The depth signs of the correspondence (q1, q2) = ((x1, y1, 1), (x2, y2, 1)) under the rotation
-R (row-major r) and the unit translation t (X2 = R X1 + t): the bit `plus` when both depths are
-positive, `minus` when both are negative, which is when both are positive under (R, -t).
+/** The depth signs of the correspondence (q1, q2) = ((x1, y1, 1), (x2, y2, 1)) under the four
+candidates of R1 (row-major r) and its twisted pair R2 = (2 t t^T - I) R1 with the unit translation
+t (X2 = R X1 + t), as bits: kR1Plus when both depths are positive under (R1, t), kR1Minus when both
+are negative, which is when both are positive under (R1, -t), and kR2Plus, kR2Minus likewise.
 
 With a = R q1 and b = q2 the depths minimise |z1 a + t - z2 b|^2, whose normal equations are
     [ a.a  -a.b ] [z1]   [ -a.t ]
@@ -46,7 +47,7 @@ Negating t negates a.t and b.t, so both numerators change sign exactly (floating
 round-to-nearest are symmetric): one evaluation decides both signs of t. Branch-free, so that the
 loop over the points vectorises. */
 inline int depthSignBits(const double* r, const double* t, double x1, double y1, double x2,
-                         double y2, int plus, int minus)
+                         double y2)
 {
     const double a0 = r[0] * x1 + r[1] * y1 + r[2];
     const double a1 = r[3] * x1 + r[4] * y1 + r[5];
@@ -61,14 +62,23 @@ inline int depthSignBits(const double* r, const double* t, double x1, double y1,
     const double z2 = aa * bt - ab * at; // times det
     const int solvable = det > 0.0;
     const int front = (z1 > 0.0) & (z2 > 0.0), behind = (z1 < 0.0) & (z2 < 0.0);
-    return solvable * (front * plus + behind * minus);
+    // The twisted ray a' = R2 q1 = 2 (a.t) t - a (R2 = (2 t t^T - I) R1, |t| = 1): |a'| = |a|,
+    // a'.t = a.t and a'.b = 2 (a.t)(b.t) - a.b, so its depths come from the same five numbers.
+    const double abTwisted = 2.0 * at * bt - ab;
+    const double detTwisted = aa * bb - abTwisted * abTwisted;
+    const double w1 = abTwisted * bt - at * bb;
+    const double w2 = aa * bt - abTwisted * at;
+    const int twistedSolvable = detTwisted > 0.0;
+    const int twistedFront = (w1 > 0.0) & (w2 > 0.0), twistedBehind = (w1 < 0.0) & (w2 < 0.0);
+    return solvable * (front * kR1Plus + behind * kR1Minus) +
+           twistedSolvable * (twistedFront * kR2Plus + twistedBehind * kR2Minus);
 }
 
 /** The four candidates' verdicts on every point as bits (0 for the points maskIn leaves out),
 written to bits[] (which may alias maskIn) and counted per candidate. */
 template <bool kMasked>
-ESSENTIAL_INLINE_POSE void voteAll(const Problem& points, const double* r1, const double* r2,
-                                   const double* t, const uchar* maskIn, uchar* bits, int counts[4])
+ESSENTIAL_INLINE_POSE void voteAll(const Problem& points, const double* r1, const double* t,
+                                   const uchar* maskIn, uchar* bits, int counts[4])
 {
     const int n = points.size();
     const double* x1 = points.x1.data();
@@ -78,8 +88,7 @@ ESSENTIAL_INLINE_POSE void voteAll(const Problem& points, const double* r1, cons
     int c0 = 0, c1 = 0, c2 = 0, c3 = 0;
     for (int i = 0; i < n; ++i) {
         const int used = kMasked ? maskIn[i] != 0 : 1;
-        const int b = used * (depthSignBits(r1, t, x1[i], y1[i], x2[i], y2[i], kR1Plus, kR1Minus) |
-                              depthSignBits(r2, t, x1[i], y1[i], x2[i], y2[i], kR2Plus, kR2Minus));
+        const int b = used * depthSignBits(r1, t, x1[i], y1[i], x2[i], y2[i]);
         c0 += b & 1;
         c1 += (b >> 1) & 1;
         c2 += (b >> 2) & 1;
@@ -92,17 +101,16 @@ ESSENTIAL_INLINE_POSE void voteAll(const Problem& points, const double* r1, cons
     counts[3] = c3;
 }
 
-ESSENTIAL_AVX2_CLONES void voteMasked(const Problem& points, const double* r1, const double* r2,
-                                      const double* t, const uchar* maskIn, uchar* bits,
-                                      int counts[4])
+ESSENTIAL_AVX2_CLONES void voteMasked(const Problem& points, const double* r1, const double* t,
+                                      const uchar* maskIn, uchar* bits, int counts[4])
 {
-    voteAll<true>(points, r1, r2, t, maskIn, bits, counts);
+    voteAll<true>(points, r1, t, maskIn, bits, counts);
 }
 
-ESSENTIAL_AVX2_CLONES void voteUnmasked(const Problem& points, const double* r1, const double* r2,
-                                        const double* t, uchar* bits, int counts[4])
+ESSENTIAL_AVX2_CLONES void voteUnmasked(const Problem& points, const double* r1, const double* t,
+                                        uchar* bits, int counts[4])
 {
-    voteAll<false>(points, r1, r2, t, nullptr, bits, counts);
+    voteAll<false>(points, r1, t, nullptr, bits, counts);
 }
 
 } // namespace
@@ -136,12 +144,12 @@ bool recoverPoseNormalised(const Matx33d& E, const Problem& points, const uchar*
     // (R2, -t); ties go to the first, as there. Each point's four verdicts are kept as bits (in
     // maskOut, which may alias maskIn: each entry is read before it is written, or in a buffer)
     // for the mask of the chosen pose.
-    double r1[9], r2[9];
+    // R2 is R1's twisted pair about t (geometry::decomposeEssential: U W V^T and U W^T V^T, t the
+    // third column of U), so the votes need R1's rays only (depthSignBits).
+    double r1[9];
     for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) {
+        for (int j = 0; j < 3; ++j)
             r1[3 * i + j] = R1(i, j);
-            r2[3 * i + j] = R2(i, j);
-        }
     const double tv[3] = {t[0], t[1], t[2]};
     std::vector<uchar> scratch;
     uchar* bits = maskOut;
@@ -151,9 +159,9 @@ bool recoverPoseNormalised(const Matx33d& E, const Problem& points, const uchar*
     }
     int counts[4] = {0, 0, 0, 0};
     if (maskIn)
-        voteMasked(points, r1, r2, tv, maskIn, bits, counts);
+        voteMasked(points, r1, tv, maskIn, bits, counts);
     else
-        voteUnmasked(points, r1, r2, tv, bits, counts);
+        voteUnmasked(points, r1, tv, bits, counts);
     const int best = static_cast<int>(std::max_element(counts, counts + 4) - counts);
     if (maskOut)
         for (int i = 0; i < n; ++i)

@@ -45,42 +45,45 @@ struct FourPoses
 in L1. */
 constexpr int kBlock = 128;
 
-/** The depth signs of one point under (R, +-t), R row-major, as bits: `plus` when both depths are
-positive under (R, t), `minus` under (R, -t) (both negative under (R, t)), both when the parallax is
-below minParallax and the signs do not decide (geometry::scaledDepths, written out with scalars and
-no branch so that the loop over a block vectorises; the same products and sums in the same order).
-*/
+/** The depth signs of one point under the four poses (R, +-t), (R', +-t), R row-major and
+R' = (2 t t^T - I) R its twisted pair, as bits 1, 2, 4, 8: a pose's bit is set when both depths are
+positive under it, or when the parallax is below minParallax and the signs do not decide. From
+five dot products of a = R q1 (Lagrange's identity on geometry::scaledDepths' cross products, as
+solvers/sample_cheirality.hpp): depth1 = (q2.a)(t.q2) - |q2|^2 (t.a), depth2 = |a|^2 (t.q2) -
+(q2.a)(t.a), |q2 x a|^2 = |q2|^2 |a|^2 - (q2.a)^2; -t negates both depths; the twisted ray
+a' = 2 (t.a) t - a has |a'| = |a|, t.a' = t.a and q2.a' = 2 (t.a)(t.q2) - q2.a. Scalars and no
+branch, so that the loop over a block vectorises. */
 inline int depthSigns(const double* r, const double* t, double x1, double y1, double x2, double y2,
-                      double minParallax2, int plus, int minus)
+                      double minParallax2)
 {
     const double a0 = r[0] * x1 + r[1] * y1 + r[2];
     const double a1 = r[3] * x1 + r[4] * y1 + r[5];
     const double a2 = r[6] * x1 + r[7] * y1 + r[8];
-    // c = q2 x a, q2 = (x2, y2, 1)
-    const double c0 = y2 * a2 - a1;
-    const double c1 = a0 - x2 * a2;
-    const double c2 = x2 * a1 - y2 * a0;
-    const double cc = c0 * c0 + c1 * c1 + c2 * c2;
     const double aa = a0 * a0 + a1 * a1 + a2 * a2;
     const double qq = x2 * x2 + y2 * y2 + 1.0;
-    // depth1 = -(q2 x t).c, depth2 = -(a x t).c
-    const double u0 = y2 * t[2] - t[1], u1 = t[0] - x2 * t[2], u2 = x2 * t[1] - y2 * t[0];
-    const double v0 = a1 * t[2] - a2 * t[1], v1 = a2 * t[0] - a0 * t[2], v2 = a0 * t[1] - a1 * t[0];
-    const double depth1 = -(u0 * c0 + u1 * c1 + u2 * c2);
-    const double depth2 = -(v0 * c0 + v1 * c1 + v2 * c2);
-    const int undecided = cc <= minParallax2 * aa * qq;
+    const double qa = x2 * a0 + y2 * a1 + a2;
+    const double ta = t[0] * a0 + t[1] * a1 + t[2] * a2;
+    const double tq = t[0] * x2 + t[1] * y2 + t[2];
+    const double limit = minParallax2 * aa * qq;
+    const double depth1 = qa * tq - qq * ta, depth2 = aa * tq - qa * ta;
+    const int undecided = qq * aa - qa * qa <= limit;
     const int front = undecided | ((depth1 > 0.0) & (depth2 > 0.0));
     const int behind = undecided | ((depth1 < 0.0) & (depth2 < 0.0));
-    return front * plus + behind * minus;
+    const double qaTwisted = 2.0 * ta * tq - qa;
+    const double twisted1 = qaTwisted * tq - qq * ta, twisted2 = aa * tq - qaTwisted * ta;
+    const int twistedUndecided = qq * aa - qaTwisted * qaTwisted <= limit;
+    const int twistedFront = twistedUndecided | ((twisted1 > 0.0) & (twisted2 > 0.0));
+    const int twistedBehind = twistedUndecided | ((twisted1 < 0.0) & (twisted2 < 0.0));
+    return front | behind << 1 | twistedFront << 2 | twistedBehind << 3;
 }
 
 /** First pass over a block: each point's squared distance and its verdicts as bits, in the order
 (R1, t), (R1, -t), (R2, t), (R2, -t); 0 for the points beyond the threshold. */
 template <bool kSymmetric>
-ESSENTIAL_INLINE_SCORE void
-verdicts(const geometry::EssentialEntries& e, const double* r1, const double* r2, const double* t,
-         const double* x1, const double* y1, const double* x2, const double* y2, int count,
-         double t2, double minParallax2, double* d2, int* bits)
+ESSENTIAL_INLINE_SCORE void verdicts(const geometry::EssentialEntries& e, const double* r1,
+                                     const double* t, const double* x1, const double* y1,
+                                     const double* x2, const double* y2, int count, double t2,
+                                     double minParallax2, double* d2, int* bits)
 {
     for (int i = 0; i < count; ++i) {
         const geometry::SampsonTerms terms = geometry::sampsonTerms(e, x1[i], y1[i], x2[i], y2[i]);
@@ -88,21 +91,20 @@ verdicts(const geometry::EssentialEntries& e, const double* r1, const double* r2
                                     : geometry::sampsonSquared(terms);
         const int inlier = d <= t2;
         d2[i] = d;
-        bits[i] = inlier * (depthSigns(r1, t, x1[i], y1[i], x2[i], y2[i], minParallax2, 1, 2) |
-                            depthSigns(r2, t, x1[i], y1[i], x2[i], y2[i], minParallax2, 4, 8));
+        bits[i] = inlier * depthSigns(r1, t, x1[i], y1[i], x2[i], y2[i], minParallax2);
     }
 }
 
 ESSENTIAL_AVX2_CLONES void blockVerdicts(const geometry::EssentialEntries& e, const double* r1,
-                                         const double* r2, const double* t, const double* x1,
-                                         const double* y1, const double* x2, const double* y2,
-                                         int count, bool symmetric, double t2, double minParallax2,
-                                         double* d2, int* bits)
+                                         const double* t, const double* x1, const double* y1,
+                                         const double* x2, const double* y2, int count,
+                                         bool symmetric, double t2, double minParallax2, double* d2,
+                                         int* bits)
 {
     if (symmetric)
-        verdicts<true>(e, r1, r2, t, x1, y1, x2, y2, count, t2, minParallax2, d2, bits);
+        verdicts<true>(e, r1, t, x1, y1, x2, y2, count, t2, minParallax2, d2, bits);
     else
-        verdicts<false>(e, r1, r2, t, x1, y1, x2, y2, count, t2, minParallax2, d2, bits);
+        verdicts<false>(e, r1, t, x1, y1, x2, y2, count, t2, minParallax2, d2, bits);
 }
 
 /** For every inlier (distance at most threshold): its squared distance added to the poses that
@@ -119,18 +121,19 @@ FourPoses inFrontOfFourPoses(const Matx33d& E, const Problem& problem, InlierTes
     const bool symmetric = test.distance == DISTANCE_SYMMETRIC_EPIPOLAR;
     const double t2 = test.threshold * test.threshold;
     const double minParallax = kUndecidedParallax * test.threshold;
-    double r[2][9];
-    for (int k = 0; k < 2; ++k)
-        for (int i = 0; i < 3; ++i)
-            for (int j = 0; j < 3; ++j)
-                r[k][3 * i + j] = R[k](i, j);
+    // R[1] is R[0]'s twisted pair about t (geometry::decomposeEssential: U W V^T and U W^T V^T, t
+    // the third column of U), so its verdicts follow from R[0]'s rays (depthSigns).
+    double r[9];
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            r[3 * i + j] = R[0](i, j);
     const double tv[3] = {t[0], t[1], t[2]};
     const int n = problem.size();
     alignas(32) double d2[kBlock];
     alignas(32) int bits[kBlock];
     for (int begin = 0; begin < n; begin += kBlock) {
         const int count = std::min(kBlock, n - begin);
-        blockVerdicts(e, r[0], r[1], tv, problem.x1.data() + begin, problem.y1.data() + begin,
+        blockVerdicts(e, r, tv, problem.x1.data() + begin, problem.y1.data() + begin,
                       problem.x2.data() + begin, problem.y2.data() + begin, count, symmetric, t2,
                       minParallax * minParallax, d2, bits);
         for (int i = 0; i < count; ++i) {

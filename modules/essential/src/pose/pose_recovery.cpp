@@ -9,6 +9,7 @@
 
 #include "pose/pose_recovery.hpp"
 
+#include "geometry/depth_signs.hpp"
 #include "geometry/essential_decomposition.hpp"
 #include "simd_dispatch.hpp"
 
@@ -37,38 +38,17 @@ constexpr int kR1Plus = 1, kR2Plus = 2, kR1Minus = 4, kR2Minus = 8;
 candidates of R1 (row-major r) and its twisted pair R2 = (2 t t^T - I) R1 with the unit translation
 t (X2 = R X1 + t), as bits: kR1Plus when both depths are positive under (R1, t), kR1Minus when both
 are negative, which is when both are positive under (R1, -t), and kR2Plus, kR2Minus likewise.
-
-With a = R q1 and b = q2 the depths minimise |z1 a + t - z2 b|^2, whose normal equations are
-    [ a.a  -a.b ] [z1]   [ -a.t ]
-    [ -a.b  b.b ] [z2] = [  b.t ].
-Their determinant d = |a|^2 |b|^2 - (a.b)^2 = |a x b|^2 is >= 0, so the signs of the depths are
-those of the numerators of Cramer's rule; parallel rays (d = 0) have no depth and never count.
-Negating t negates a.t and b.t, so both numerators change sign exactly (floating-point negation and
-round-to-nearest are symmetric): one evaluation decides both signs of t. Branch-free, so that the
-loop over the points vectorises. */
+Parallel rays have no depth and never count (geometry::DepthProducts::solvable). Branch-free, so
+that the loop over the points vectorises. */
 inline int depthSignBits(const double* r, const double* t, double x1, double y1, double x2,
                          double y2)
 {
-    const double a0 = r[0] * x1 + r[1] * y1 + r[2];
-    const double a1 = r[3] * x1 + r[4] * y1 + r[5];
-    const double a2 = r[6] * x1 + r[7] * y1 + r[8];
-    const double aa = a0 * a0 + a1 * a1 + a2 * a2;
-    const double bb = x2 * x2 + y2 * y2 + 1.0;
-    const double ab = a0 * x2 + a1 * y2 + a2;
-    const double at = a0 * t[0] + a1 * t[1] + a2 * t[2];
-    const double bt = x2 * t[0] + y2 * t[1] + t[2];
-    const double det = aa * bb - ab * ab;
-    const double z1 = ab * bt - at * bb; // times det
-    const double z2 = aa * bt - ab * at; // times det
-    const int solvable = det > 0.0;
+    const geometry::DepthProducts p = geometry::depthProducts(r, t, x1, y1, x2, y2);
+    const geometry::DepthProducts w = p.twisted();
+    const double z1 = p.depth1(), z2 = p.depth2();
+    const double w1 = w.depth1(), w2 = w.depth2();
+    const int solvable = p.solvable(), twistedSolvable = w.solvable();
     const int front = (z1 > 0.0) & (z2 > 0.0), behind = (z1 < 0.0) & (z2 < 0.0);
-    // The twisted ray a' = R2 q1 = 2 (a.t) t - a (R2 = (2 t t^T - I) R1, |t| = 1): |a'| = |a|,
-    // a'.t = a.t and a'.b = 2 (a.t)(b.t) - a.b, so its depths come from the same five numbers.
-    const double abTwisted = 2.0 * at * bt - ab;
-    const double detTwisted = aa * bb - abTwisted * abTwisted;
-    const double w1 = abTwisted * bt - at * bb;
-    const double w2 = aa * bt - abTwisted * at;
-    const int twistedSolvable = detTwisted > 0.0;
     const int twistedFront = (w1 > 0.0) & (w2 > 0.0), twistedBehind = (w1 < 0.0) & (w2 < 0.0);
     return solvable * (front * kR1Plus + behind * kR1Minus) +
            twistedSolvable * (twistedFront * kR2Plus + twistedBehind * kR2Minus);

@@ -20,8 +20,8 @@ namespace scoring {
 
 namespace {
 
-/** The parallax (geometry::scaledDepths) below which a point's depth signs do not decide, in
-inlier thresholds: such a point (a distant one, or one near the epipole) counts as in front under
+/** The parallax (geometry::DepthProducts::decided) below which a point's depth signs do not decide,
+in inlier thresholds: such a point (a distant one, or one near the epipole) counts as in front under
 every pose rather than as evidence against one. The inlier threshold bounds the angle noise moves a
 ray by (in normalised units, about radians); twice that is where the sign of the triangulated depth
 stops being set by the noise. */
@@ -47,31 +47,19 @@ constexpr int kBlock = 128;
 
 /** The depth signs of one point under the four poses (R, +-t), (R', +-t), R row-major and
 R' = (2 t t^T - I) R its twisted pair, as bits 1, 2, 4, 8: a pose's bit is set when both depths are
-positive under it, or when the parallax is below minParallax and the signs do not decide. From
-five dot products of a = R q1 (Lagrange's identity on geometry::scaledDepths' cross products, as
-solvers/sample_cheirality.hpp): depth1 = (q2.a)(t.q2) - |q2|^2 (t.a), depth2 = |a|^2 (t.q2) -
-(q2.a)(t.a), |q2 x a|^2 = |q2|^2 |a|^2 - (q2.a)^2; -t negates both depths; the twisted ray
-a' = 2 (t.a) t - a has |a'| = |a|, t.a' = t.a and q2.a' = 2 (t.a)(t.q2) - q2.a. Scalars and no
-branch, so that the loop over a block vectorises. */
+positive under it, or when the parallax is below minParallax and the signs do not decide
+(geometry::DepthProducts; scalars and no branch, so that the loop over a block vectorises). */
 inline int depthSigns(const double* r, const double* t, double x1, double y1, double x2, double y2,
                       double minParallax2)
 {
-    const double a0 = r[0] * x1 + r[1] * y1 + r[2];
-    const double a1 = r[3] * x1 + r[4] * y1 + r[5];
-    const double a2 = r[6] * x1 + r[7] * y1 + r[8];
-    const double aa = a0 * a0 + a1 * a1 + a2 * a2;
-    const double qq = x2 * x2 + y2 * y2 + 1.0;
-    const double qa = x2 * a0 + y2 * a1 + a2;
-    const double ta = t[0] * a0 + t[1] * a1 + t[2] * a2;
-    const double tq = t[0] * x2 + t[1] * y2 + t[2];
-    const double limit = minParallax2 * aa * qq;
-    const double depth1 = qa * tq - qq * ta, depth2 = aa * tq - qa * ta;
-    const int undecided = qq * aa - qa * qa <= limit;
+    const geometry::DepthProducts p = geometry::depthProducts(r, t, x1, y1, x2, y2);
+    const geometry::DepthProducts w = p.twisted();
+    const double depth1 = p.depth1(), depth2 = p.depth2();
+    const double twisted1 = w.depth1(), twisted2 = w.depth2();
+    const int undecided = !p.decided(minParallax2);
     const int front = undecided | ((depth1 > 0.0) & (depth2 > 0.0));
     const int behind = undecided | ((depth1 < 0.0) & (depth2 < 0.0));
-    const double qaTwisted = 2.0 * ta * tq - qa;
-    const double twisted1 = qaTwisted * tq - qq * ta, twisted2 = aa * tq - qaTwisted * ta;
-    const int twistedUndecided = qq * aa - qaTwisted * qaTwisted <= limit;
+    const int twistedUndecided = !w.decided(minParallax2);
     const int twistedFront = twistedUndecided | ((twisted1 > 0.0) & (twisted2 > 0.0));
     const int twistedBehind = twistedUndecided | ((twisted1 < 0.0) & (twisted2 < 0.0));
     return front | behind << 1 | twistedFront << 2 | twistedBehind << 3;
@@ -108,8 +96,8 @@ ESSENTIAL_AVX2_CLONES void blockVerdicts(const geometry::EssentialEntries& e, co
 }
 
 /** For every inlier (distance at most threshold): its squared distance added to the poses that
-place it in front of both cameras (geometry::scaledDepths; -t flips both depth signs). The costs are
-summed in the points' order, as one loop over them would. */
+place it in front of both cameras (geometry::DepthProducts; -t flips both depth signs). The costs
+are summed in the points' order, as one loop over them would. */
 FourPoses inFrontOfFourPoses(const Matx33d& E, const Problem& problem, InlierTest test, bool& ok)
 {
     FourPoses out;

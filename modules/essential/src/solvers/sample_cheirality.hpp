@@ -28,41 +28,30 @@ constexpr double kMinCheiralityParallax = 3e-3;
 namespace detail {
 
 /** Whether one of the four poses (R, +-t), (R', +-t), with R' = (2 t t^T - I) R the twisted pair
-and t a unit vector, puts every decided sample point in front of both cameras.
-
-The four poses are tested in one pass over the points, from five dot products of a point: with
-a = R q1, geometry::scaledDepths' cross products expand (Lagrange's identity) to
-  depth1 = (q2.a)(t.q2) - |q2|^2 (t.a),  depth2 = |a|^2 (t.q2) - (q2.a)(t.a),
-  |q2 x a|^2 = |q2|^2 |a|^2 - (q2.a)^2.
-Negating t negates both depths, so (R, -t) holds exactly when every decided point has two negative
-depths under (R, t). The twisted ray a' = R' q1 = 2 (t.a) t - a has |a'| = |a|, t.a' = t.a and
-q2.a' = 2 (t.a)(t.q2) - q2.a, so its depths follow from the same five numbers. The loop ends as
-soon as no pose is left. */
+and t a unit vector, puts every decided sample point in front of both cameras. The four are tested
+in one pass over the points, from one rotated ray a point (geometry::DepthProducts); the loop ends
+as soon as no pose is left. */
 inline bool anyPoseInFront(const Eigen::Matrix3d& R, const Eigen::Vector3d& t, const Point2d* x1,
                            const Point2d* x2, int n)
 {
     const double minParallax2 = kMinCheiralityParallax * kMinCheiralityParallax;
-    const double tx = t.x(), ty = t.y(), tz = t.z();
+    double r[9];
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            r[3 * i + j] = R(i, j);
+    const double tv[3] = {t.x(), t.y(), t.z()};
     bool front = true, back = true, twistedFront = true, twistedBack = true;
     for (int i = 0; i < n && (front || back || twistedFront || twistedBack); ++i) {
-        const double p = x1[i].x, q = x1[i].y, bx = x2[i].x, by = x2[i].y;
-        const double ax = R(0, 0) * p + R(0, 1) * q + R(0, 2);
-        const double ay = R(1, 0) * p + R(1, 1) * q + R(1, 2);
-        const double az = R(2, 0) * p + R(2, 1) * q + R(2, 2);
-        const double aa = ax * ax + ay * ay + az * az;
-        const double qq = bx * bx + by * by + 1.0;
-        const double qa = bx * ax + by * ay + az;
-        const double ta = tx * ax + ty * ay + tz * az;
-        const double tq = tx * bx + ty * by + tz;
-        const double limit = minParallax2 * aa * qq;
-        if (qq * aa - qa * qa > limit) {
-            const double depth1 = qa * tq - qq * ta, depth2 = aa * tq - qa * ta;
+        const geometry::DepthProducts p =
+            geometry::depthProducts(r, tv, x1[i].x, x1[i].y, x2[i].x, x2[i].y);
+        if (p.decided(minParallax2)) {
+            const double depth1 = p.depth1(), depth2 = p.depth2();
             front &= depth1 > 0.0 && depth2 > 0.0;
             back &= depth1 < 0.0 && depth2 < 0.0;
         }
-        const double qaTwisted = 2.0 * ta * tq - qa;
-        if (qq * aa - qaTwisted * qaTwisted > limit) {
-            const double depth1 = qaTwisted * tq - qq * ta, depth2 = aa * tq - qaTwisted * ta;
+        const geometry::DepthProducts w = p.twisted();
+        if (w.decided(minParallax2)) {
+            const double depth1 = w.depth1(), depth2 = w.depth2();
             twistedFront &= depth1 > 0.0 && depth2 > 0.0;
             twistedBack &= depth1 < 0.0 && depth2 < 0.0;
         }

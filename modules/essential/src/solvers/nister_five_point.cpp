@@ -123,8 +123,9 @@ ESSENTIAL_INLINE_INTO_CLONES double polishRoot(const double* d, int n, double lo
 dependent Horner evaluations (about 45 a call), each waiting for the sign of the last, one root
 after another; the roots of one d(z) are independent, so four advance together, lane l of every
 vector through exactly the operations root l would take alone (IEEE operations lane by lane, selects
-where the scalar code branched, a finished lane carried along unchanged): the same bits, a quarter
-of the chains. GCC's vector extension (one AVX2 or two SSE2 instructions per operation). */
+where the scalar code branched, a finished lane carried along unchanged): the same bits as the
+scalar code compiled for the same target, a quarter of the chains. GCC's vector extension (one AVX2
+or two SSE2 instructions per operation). */
 typedef double RootLanes __attribute__((vector_size(4 * sizeof(double))));
 typedef long long LaneMask __attribute__((vector_size(4 * sizeof(double))));
 constexpr int kRootLanes = 4;
@@ -674,13 +675,13 @@ ESSENTIAL_INLINE_INTO_CLONES int findRealRoots(const FrameWork& w, const NisterS
 }
 
 // realRoots(w, settings, bound, roots, diagnostics): findRealRoots in vector lanes where four
-// doubles fill a register (AVX2), one root after another where two do (SSE2: measured 18% slower
-// per call in lanes, docs/SOLVERS.md). With clones, GCC's function multiversioning picks the
-// version on the running processor; without, the build's target decides.
+// doubles fill a register (AVX2, with the clones' FMA), one root after another where two do (SSE2:
+// measured 18% slower per call in lanes, docs/SOLVERS.md). With clones, GCC's function
+// multiversioning picks the version on the running processor; without, the build's target decides.
 #if ESSENTIAL_ROOT_LANES && ESSENTIAL_HAS_CLONES
-__attribute__((target("avx2"))) int realRoots(const FrameWork& w, const NisterSettings& settings,
-                                              double bound, double* roots,
-                                              NisterFivePointSolver::Diagnostics& diagnostics)
+__attribute__((target(ESSENTIAL_CLONE_TARGET))) int
+realRoots(const FrameWork& w, const NisterSettings& settings, double bound, double* roots,
+          NisterFivePointSolver::Diagnostics& diagnostics)
 {
     return findRealRoots(w, settings, bound, true, roots, diagnostics);
 }

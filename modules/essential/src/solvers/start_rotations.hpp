@@ -141,8 +141,9 @@ ESSENTIAL_INLINE_INTO_CLONES void coplanarityCosts(const Point2d* x1, const Poin
                    s02[i] * (s01[i] * s12[i] - s11[i] * s02[i]);
 }
 
-/** coplanarityCosts<5>, compiled into an AVX2 clone as well (four rotations per vector instead of
-two), which the CPU picks at load time (simd_dispatch.hpp); the same results either way. */
+/** coplanarityCosts<5>, compiled into an AVX2 / FMA clone as well (four rotations per vector instead
+of two), which the CPU picks at load time (simd_dispatch.hpp); the clone's fused multiply-adds
+change the costs in the last bits only (test_solvers bounds the difference). */
 void sampleCoplanarityCosts(const Point2d* x1, const Point2d* x2,
                             double costs[StartRotations::kCount]);
 

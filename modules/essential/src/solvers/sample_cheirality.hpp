@@ -10,6 +10,7 @@
 
 #include "geometry/depth_signs.hpp"
 #include "geometry/essential_parameterisation.hpp"
+#include "simd_dispatch.hpp"
 
 #include <opencv2/core.hpp>
 
@@ -31,8 +32,8 @@ namespace detail {
 and t a unit vector, puts every decided sample point in front of both cameras. The four are tested
 in one pass over the points, from one rotated ray a point (geometry::DepthProducts); the loop ends
 as soon as no pose is left. */
-inline bool anyPoseInFront(const Eigen::Matrix3d& R, const Eigen::Vector3d& t, const Point2d* x1,
-                           const Point2d* x2, int n)
+ESSENTIAL_INLINE_INTO_CLONES bool anyPoseInFront(const Eigen::Matrix3d& R, const Eigen::Vector3d& t,
+                                                 const Point2d* x1, const Point2d* x2, int n)
 {
     const double minParallax2 = kMinCheiralityParallax * kMinCheiralityParallax;
     double r[9];
@@ -76,7 +77,8 @@ a well-defined left null vector (zero or not finite). The search runs it on ever
 solutions before they are scored: a minimal solver's wrong roots often fail it, and so do the models
 of mixed samples that fit a wrong epipolar geometry with support (on a real pair whose model fitted
 238 of 281 matches within 1 px, the best of its four poses had 42 of them in front). */
-inline bool essentialSampleIsInFront(const Matx33d& E, const Point2d* x1, const Point2d* x2, int n)
+ESSENTIAL_INLINE_INTO_CLONES bool essentialSampleIsInFront(const Matx33d& E, const Point2d* x1,
+                                                           const Point2d* x2, int n)
 {
     const double* e = E.val; // row-major: e[3 r + c]
     // t spans the left null space of E = [t]x R, orthogonal to every column: the largest cross
@@ -128,15 +130,10 @@ inline bool essentialSampleIsInFront(const Matx33d& E, const Point2d* x1, const 
 }
 
 /** Keeps, in order, the first `count` solutions that pass essentialSampleIsInFront on the sample;
-returns how many. */
-inline int keepSolutionsInFront(Matx33d* solutions, int count, const Point2d* x1, const Point2d* x2,
-                                int n)
-{
-    int kept = 0;
-    for (int h = 0; h < count; ++h)
-        if (essentialSampleIsInFront(solutions[h], x1, x2, n)) solutions[kept++] = solutions[h];
-    return kept;
-}
+returns how many. Out of line (sample_cheirality.cpp) in a SIMD clone: the search runs it on every
+root of every sample. */
+int keepSolutionsInFront(Matx33d* solutions, int count, const Point2d* x1, const Point2d* x2,
+                         int n);
 
 } // namespace solvers
 } // namespace essential

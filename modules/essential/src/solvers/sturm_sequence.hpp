@@ -72,8 +72,9 @@ RecurrenceCountsLikeDirectEvaluationOnTheSolversPolynomials). */
 class SturmSequence
 {
 public:
-    /** Builds the sequence of d (degree n >= 1, d[n] != 0). */
-    void build(const double* d, int n)
+    /** Builds the sequence of d (degree n >= 1, d[n] != 0). Inlined into the five-point solver's
+    frame preparation, so that it runs in that function's SIMD clone (simd_dispatch.hpp). */
+    ESSENTIAL_INLINE_INTO_CLONES void build(const double* d, int n)
     {
         for (int i = 0; i <= n; ++i)
             p_[0][i] = d[i];
@@ -290,7 +291,7 @@ private:
     /** Scales member k by 1 / m, m = max |coefficient|, and records its new largest magnitude:
     m * (1 / m), the product the largest coefficient becomes (rounding is monotonic, so no other
     exceeds it); max(0, .) gives 0 where maxAbs would, should m be infinite. */
-    void normalise(int k, double m)
+    ESSENTIAL_INLINE_INTO_CLONES void normalise(int k, double m)
     {
         largest_[k] = m;
         if (m > 0.0) {

@@ -31,6 +31,40 @@ Eigen::Matrix3d randomEssential(std::mt19937_64& g)
     return p.E();
 }
 
+/** The epipolar residual r = q2^T E q1 of a correspondence, the squared lengths D1 of the first two
+entries of E^T q2 and D2 of E q1 (the Sampson and symmetric distances' denominators), and the
+magnitudes that bound their rounding: M, the sum of |r|'s terms, and A1, A2, the same sums of
+squares with every term of the line entries taken by magnitude. */
+struct EpipolarMagnitudes
+{
+    double r = 0.0, M = 0.0, D1 = 0.0, D2 = 0.0, A1 = 0.0, A2 = 0.0;
+};
+
+template <class Matrix>
+EpipolarMagnitudes epipolarMagnitudes(const Matrix& E, const cv::Point2d& p1, const cv::Point2d& p2)
+{
+    const double q1[3] = {p1.x, p1.y, 1.0}, q2[3] = {p2.x, p2.y, 1.0};
+    EpipolarMagnitudes m;
+    for (int k = 0; k < 3; ++k) {
+        double line2 = 0.0, line2Abs = 0.0, line1 = 0.0, line1Abs = 0.0; // E q1, E^T q2
+        for (int j = 0; j < 3; ++j) {
+            m.M += std::abs(q2[k] * E(k, j) * q1[j]);
+            m.r += q2[k] * E(k, j) * q1[j];
+            line2 += E(k, j) * q1[j];
+            line2Abs += std::abs(E(k, j) * q1[j]);
+            line1 += E(j, k) * q2[j];
+            line1Abs += std::abs(E(j, k) * q2[j]);
+        }
+        if (k < 2) {
+            m.D2 += line2 * line2;
+            m.A2 += line2Abs * line2Abs;
+            m.D1 += line1 * line1;
+            m.A1 += line1Abs * line1Abs;
+        }
+    }
+    return m;
+}
+
 double algebraic(const Eigen::Matrix3d& E, const double v[4])
 {
     return Eigen::Vector3d(v[2], v[3], 1.0).dot(E * Eigen::Vector3d(v[0], v[1], 1.0));
@@ -133,25 +167,10 @@ TEST(Sampson, ScoringAndTheJacobianUseTheSameDistance)
     cv::essential::scoring::sampsonErrors(Ecv, problem, errors.data());
     for (size_t i = 0; i < p1.size(); ++i) {
         const double reference = sampsonSquared(d.E, p1[i].x, p1[i].y, p2[i].x, p2[i].y);
-        const double q1[3] = {p1[i].x, p1[i].y, 1.0}, q2[3] = {p2[i].x, p2[i].y, 1.0};
-        double M = 0.0, r = 0.0, D = 0.0, A = 0.0;
-        for (int k = 0; k < 3; ++k) {
-            double line2 = 0.0, line2Abs = 0.0, line1 = 0.0, line1Abs = 0.0; // E q1, E^T q2
-            for (int j = 0; j < 3; ++j) {
-                M += std::abs(q2[k] * d.E(k, j) * q1[j]);
-                r += q2[k] * d.E(k, j) * q1[j];
-                line2 += d.E(k, j) * q1[j];
-                line2Abs += std::abs(d.E(k, j) * q1[j]);
-                line1 += d.E(j, k) * q2[j];
-                line1Abs += std::abs(d.E(j, k) * q2[j]);
-            }
-            if (k < 2) {
-                D += line2 * line2 + line1 * line1;
-                A += line2Abs * line2Abs + line1Abs * line1Abs;
-            }
-        }
+        const EpipolarMagnitudes m = epipolarMagnitudes(d.E, p1[i], p2[i]);
         const double eps = std::numeric_limits<double>::epsilon();
-        const double bound = 16.0 * eps * (2.0 * std::abs(r) * M + reference * A) / D;
+        const double bound =
+            16.0 * eps * (2.0 * std::abs(m.r) * m.M + reference * (m.A1 + m.A2)) / (m.D1 + m.D2);
         EXPECT_NEAR(errors[i], reference, bound + 1e-14 * reference) << i;
         double s, J[5];
         ASSERT_TRUE(sampsonResidualAndJacobian(d, p1[i].x, p1[i].y, p2[i].x, p2[i].y, s, J));
@@ -204,29 +223,12 @@ TEST(SymmetricEpipolar, ScoringUsesTheProblemsDistance)
     for (size_t i = 0; i < p1.size(); ++i) {
         const double ref =
             symmetricEpipolarSquared(EssentialEntries(E), p1[i].x, p1[i].y, p2[i].x, p2[i].y);
-        // The scoring loop may run in the library's FMA clone (see ScoringAndTheJacobianUseThe
-        // SameDistance): a few ulps of the magnitudes of r's terms (M) and of the lines' (A1, A2).
-        const double q1[3] = {p1[i].x, p1[i].y, 1.0}, q2[3] = {p2[i].x, p2[i].y, 1.0};
-        double M = 0.0, r = 0.0, D1 = 0.0, D2 = 0.0, A1 = 0.0, A2 = 0.0;
-        for (int k = 0; k < 3; ++k) {
-            double line2 = 0.0, line2Abs = 0.0, line1 = 0.0, line1Abs = 0.0;
-            for (int j = 0; j < 3; ++j) {
-                M += std::abs(q2[k] * E(k, j) * q1[j]);
-                r += q2[k] * E(k, j) * q1[j];
-                line2 += E(k, j) * q1[j];
-                line2Abs += std::abs(E(k, j) * q1[j]);
-                line1 += E(j, k) * q2[j];
-                line1Abs += std::abs(E(j, k) * q2[j]);
-            }
-            if (k < 2) {
-                D2 += line2 * line2;
-                A2 += line2Abs * line2Abs;
-                D1 += line1 * line1;
-                A1 += line1Abs * line1Abs;
-            }
-        }
+        // The scoring loop may run in the library's FMA clone (see
+        // ScoringAndTheJacobianUseTheSameDistance): a few ulps of r's and the lines' magnitudes.
+        const EpipolarMagnitudes m = epipolarMagnitudes(E, p1[i], p2[i]);
         const double eps = std::numeric_limits<double>::epsilon();
-        const double bound = 16.0 * eps * ref * (2.0 * M / std::abs(r) + A1 / D1 + A2 / D2);
+        const double bound =
+            16.0 * eps * ref * (2.0 * m.M / std::abs(m.r) + m.A1 / m.D1 + m.A2 / m.D2);
         EXPECT_NEAR(d[i], ref, bound + 1e-14 * ref);
         EXPECT_EQ(mask[i], ref <= 0.05 * 0.05 ? 1 : 0);
         expected += ref <= 0.05 * 0.05;

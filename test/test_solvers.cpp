@@ -341,20 +341,17 @@ TEST(Solvers, BatchedCoplanarityCostsEqualTheDefinitionAndRankTheStarts)
             ASSERT_EQ(costs[i], definition) << "seed " << seed << " rotation " << i;
             ASSERT_NEAR(dispatched[i], definition, 1e-12) << "seed " << seed << " rotation " << i;
         }
-        // The ranking is the first entries of the dispatched costs stably sorted: ascending, ties
-        // by index.
+        // The ranking hands out the dispatched costs stably sorted: ascending, ties by index.
         std::vector<int> order(StartRotations::kCount);
         std::iota(order.begin(), order.end(), 0);
         std::stable_sort(order.begin(), order.end(),
                          [&](int a, int b) { return dispatched[a] < dispatched[b]; });
-        for (int count : {8, 3}) {
-            int best[8];
-            cv::essential::solvers::rankStartRotations(scene.x1.data(), scene.x2.data(), count,
-                                                       best);
-            for (int k = 0; k < count; ++k)
-                ASSERT_EQ(best[k], order[static_cast<size_t>(k)])
-                    << "seed " << seed << " rank " << k << " of " << count;
-        }
+        cv::essential::solvers::StartRanking ranking;
+        ranking.rank(scene.x1.data(), scene.x2.data());
+        for (int k = 0; k < StartRotations::kCount; ++k)
+            ASSERT_EQ(ranking.takeNext(), order[static_cast<size_t>(k)])
+                << "seed " << seed << " rank " << k;
+        EXPECT_EQ(ranking.takeNext(), -1) << "seed " << seed << ": every rotation taken";
     }
 }
 

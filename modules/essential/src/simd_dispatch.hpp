@@ -31,8 +31,20 @@ caller with a different target unless told to, and the loop would then run its d
 both clones. */
 #if defined(__GNUC__)
 #define ESSENTIAL_INLINE_INTO_CLONES inline __attribute__((always_inline))
+#define ESSENTIAL_LAMBDA_INLINE_INTO_CLONES __attribute__((always_inline))
 #else
 #define ESSENTIAL_INLINE_INTO_CLONES inline
+#define ESSENTIAL_LAMBDA_INLINE_INTO_CLONES
+#endif
+
+/** For a marked function that calls much header code not marked for inlining (Eigen's small
+fixed-size expressions): every call in it is inlined where the callee's body is visible. Without it
+GCC left dozens of Eigen's 3-vector and comma-initialiser calls in the clone of the iterative
+solvers (solvers/iterative_minimal_solver.cpp), which then ran their default build. */
+#if defined(__GNUC__)
+#define ESSENTIAL_FLATTEN __attribute__((flatten))
+#else
+#define ESSENTIAL_FLATTEN
 #endif
 
 #endif

@@ -13,6 +13,7 @@
 
 #include "geometry/sampson.hpp"
 #include "geometry/so3.hpp"
+#include "simd_dispatch.hpp"
 
 #include <Eigen/Core>
 #include <Eigen/Geometry> // cross products
@@ -37,15 +38,17 @@ struct EssentialPose
     Eigen::Matrix3d E() const { return skew(Rt.col(0)) * R; }
 
     /** Moves along the manifold by the increment d (d1..d3 rotate R, d4, d5 turn t). */
-    void update(const Vector5d& d)
+    ESSENTIAL_INLINE_INTO_CLONES void update(const Vector5d& d)
     {
+        // Eigen's 3 x 3 products stay calls into its default build from the SIMD clones (GCC does
+        // not inline them there); written out entry by entry they took more instructions.
         R = expGenerators(d[0], d[1], d[2]) * R;
         Rt = Rt * expGenerators(d[3], d[4], 0.0);
     }
 };
 
 /** A rotation whose first column is the unit vector t (any completion of the basis). */
-inline Eigen::Matrix3d rotationWithFirstColumn(const Eigen::Vector3d& t)
+ESSENTIAL_INLINE_INTO_CLONES Eigen::Matrix3d rotationWithFirstColumn(const Eigen::Vector3d& t)
 {
     const Eigen::Vector3d x = t.normalized();
     // The axis of x's smallest component is the farthest from parallel to x.
@@ -81,8 +84,8 @@ With a = R q1, c = a x q2 and b = q2 x t, r = t . c, and
   dr/dd_k = q2^T [t]x G_k a = b . (G_k a)     (k = 1..3, equation 3)
   dr/dd_4 = (Rt G1 e1) . c = -u . c,  dr/dd_5 = (Rt G2 e1) . c = -v . c   (equation 4)
 since G1 e1 = -e2 and G2 e1 = -e3. */
-inline double residualAndJacobian(const ResidualFrame& f, double x1, double y1, double x2,
-                                  double y2, double J[5])
+ESSENTIAL_INLINE_INTO_CLONES double
+residualAndJacobian(const ResidualFrame& f, double x1, double y1, double x2, double y2, double J[5])
 {
     // Scalar arithmetic rather than Eigen's 3-vectors: those go into SSE2 pairs plus a lone
     // third entry, and the shuffles between them outnumbered the multiply-adds (callgrind).
@@ -181,8 +184,8 @@ inline bool epipolarDistancesAndJacobian(const EssentialDerivatives& d, double x
 }
 
 /** The algebraic residual alone, r = q2^T E q1. */
-inline double algebraicResidual(const Eigen::Matrix3d& E, double x1, double y1, double x2,
-                                double y2)
+ESSENTIAL_INLINE_INTO_CLONES double algebraicResidual(const Eigen::Matrix3d& E, double x1,
+                                                      double y1, double x2, double y2)
 {
     return Eigen::Vector3d(x2, y2, 1.0).dot(E * Eigen::Vector3d(x1, y1, 1.0));
 }

@@ -6,6 +6,8 @@
 #ifndef OPENCV_ESSENTIAL_GEOMETRY_SO3_HPP
 #define OPENCV_ESSENTIAL_GEOMETRY_SO3_HPP
 
+#include "simd_dispatch.hpp"
+
 #include <Eigen/Core>
 
 #include <cmath>
@@ -25,27 +27,42 @@ inline Eigen::Matrix3d skew(const Eigen::Vector3d& w)
 /** exp([w]x) by Rodrigues' formula, exp([w]x) = I + a [w]x + b [w]x^2 with a = sin(theta) / theta,
 b = (1 - cos(theta)) / theta^2 and [w]x^2 = w w^T - theta^2 I.
 
-Below theta = 0.5 rad (every Gauss-Newton step but the first few) a and b come from their Taylor
-series instead of sin and cos: through the theta^12 terms the first omitted term is below
-5e-17 relative (0.5^14 / 15! for a, 0.5^14 / 16! for b), so the result is the exponential map to
-double precision, at a third of the instructions of the library's sincos (callgrind). */
-inline Eigen::Matrix3d expSO3(const Eigen::Vector3d& w)
+Below theta = 1 rad (every Gauss-Newton step but a few of the first) a and b come from their Taylor
+series instead of sin and cos: through the theta^16 terms the first omitted term is below
+1e-17 relative (1 / 19! for a, 1 / 20! for b at theta = 1), so the result is the exponential map
+to double precision, at a third of the instructions of the library's sincos (callgrind). The
+bound was 0.5 rad with seven terms; the first steps of gn from R = I are often between 0.5 and
+1 rad, and two more terms cost less than the sincos they replace (docs/SOLVERS.md, "Cost per
+call"). */
+ESSENTIAL_INLINE_INTO_CLONES Eigen::Matrix3d expSO3(const Eigen::Vector3d& w)
 {
     const double t2 = w.squaredNorm();
     double a, b;
-    if (t2 < 0.25) {
-        // Horner in theta^2: a = sum (-t2)^k / (2k + 1)!, b = sum (-t2)^k / (2k + 2)!, k = 0..6.
+    if (t2 < 1.0) {
+        // Horner in theta^2: a = sum (-t2)^k / (2k + 1)!, b = sum (-t2)^k / (2k + 2)!, k = 0..8.
         // The coefficients as constants, so that every step is a multiplication and an addition:
         // written as divisions by (2k)(2k + 1) they stay divisions without -freciprocal-math.
-        static constexpr double kA[7] = {
-            1.0,          -1.0 / 6,        1.0 / 120,         -1.0 / 5040,
-            1.0 / 362880, -1.0 / 39916800, 1.0 / 6227020800.0};
-        static constexpr double kB[7] = {
-            0.5,           -1.0 / 24,        1.0 / 720,          -1.0 / 40320,
-            1.0 / 3628800, -1.0 / 479001600, 1.0 / 87178291200.0};
-        a = kA[6];
-        b = kB[6];
-        for (int k = 5; k >= 0; --k) {
+        static constexpr double kA[9] = {1.0,
+                                         -1.0 / 6,
+                                         1.0 / 120,
+                                         -1.0 / 5040,
+                                         1.0 / 362880,
+                                         -1.0 / 39916800,
+                                         1.0 / 6227020800.0,
+                                         -1.0 / 1307674368000.0,
+                                         1.0 / 355687428096000.0};
+        static constexpr double kB[9] = {0.5,
+                                         -1.0 / 24,
+                                         1.0 / 720,
+                                         -1.0 / 40320,
+                                         1.0 / 3628800,
+                                         -1.0 / 479001600,
+                                         1.0 / 87178291200.0,
+                                         -1.0 / 20922789888000.0,
+                                         1.0 / 6402373705728000.0};
+        a = kA[8];
+        b = kB[8];
+        for (int k = 7; k >= 0; --k) {
             a = a * t2 + kA[k];
             b = b * t2 + kB[k];
         }
@@ -65,13 +82,14 @@ inline Eigen::Matrix3d expSO3(const Eigen::Vector3d& w)
 
 /** The paper's generators are G1 = -[e3]x, G2 = [e2]x, G3 = -[e1]x, so that
 exp(d1 G1 + d2 G2 + d3 G3) = exp([w]x) with w = (-d3, d2, -d1). */
-inline Eigen::Vector3d generatorCoefficientsToAxis(double d1, double d2, double d3)
+ESSENTIAL_INLINE_INTO_CLONES Eigen::Vector3d generatorCoefficientsToAxis(double d1, double d2,
+                                                                         double d3)
 {
     return Eigen::Vector3d(-d3, d2, -d1);
 }
 
 /** exp(d1 G1 + d2 G2 + d3 G3) with the paper's generators. */
-inline Eigen::Matrix3d expGenerators(double d1, double d2, double d3)
+ESSENTIAL_INLINE_INTO_CLONES Eigen::Matrix3d expGenerators(double d1, double d2, double d3)
 {
     return expSO3(generatorCoefficientsToAxis(d1, d2, d3));
 }

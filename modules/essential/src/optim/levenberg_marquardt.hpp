@@ -10,6 +10,7 @@
 #define OPENCV_ESSENTIAL_OPTIM_LEVENBERG_MARQUARDT_HPP
 
 #include "optim/small_linear_solve.hpp"
+#include "simd_dispatch.hpp"
 
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
@@ -35,7 +36,7 @@ struct NormalEquations
     parameter in its own units). Cholesky first; a matrix that is not positive definite (a zero
     column of J) goes to the pivoting LDLT, which treats a zero pivot as a zero component of the
     step. False when the step is not finite. */
-    bool solve(double lambda, Vector5& step)
+    ESSENTIAL_INLINE_INTO_CLONES bool solve(double lambda, Vector5& step)
     {
         Matrix5 damped = A;
         damped.diagonal() *= 1.0 + lambda;
@@ -59,13 +60,13 @@ class SquareSystem
 public:
     /** The model writes r and J through `evaluate(r, J)`, whose result (the cost) is returned; the
     normal equations of the previous ones are dropped with them. */
-    template <class Evaluate> double write(Evaluate&& evaluate)
+    template <class Evaluate> ESSENTIAL_INLINE_INTO_CLONES double write(Evaluate&& evaluate)
     {
         normalFormed_ = false;
         return evaluate(r_, J_);
     }
 
-    bool solve(double lambda, Vector5& step)
+    ESSENTIAL_INLINE_INTO_CLONES bool solve(double lambda, Vector5& step)
     {
         if (lambda == 0.0) return solvePartialPivot<5>(J_, -r_, step) && step.allFinite();
         if (!normalFormed_) {
@@ -78,7 +79,7 @@ public:
 
     /** The decrease of the cost |r|^2 (the minimal problems' cost) the linearisation predicts for
     `step`: |r|^2 - |r + J d|^2. */
-    double predictedDecrease(const Vector5& step) const
+    ESSENTIAL_INLINE_INTO_CLONES double predictedDecrease(const Vector5& step) const
     {
         const Vector5 Jd = J_ * step;
         return -2.0 * r_.dot(Jd) - Jd.squaredNorm();
@@ -159,10 +160,12 @@ The Model: `double linearise(const Params&, System&)` (the cost, and the system 
 `double cost(const Params&)`, `static constexpr bool kCostWithEquations`; Params has
 `update(const Vector5&)`. */
 template <class Model, class Params, class System>
-inline StepOutcome dampedIteration(Model& model, Params& x, System& system, System& trialSystem,
-                                   double& cost, double& lambda, const Damping& damping,
-                                   LmResult& counts, int maxTrials, bool& systemCurrent,
-                                   double stopBelow = 0.0)
+ESSENTIAL_INLINE_INTO_CLONES StepOutcome dampedIteration(Model& model, Params& x, System& system,
+                                                         System& trialSystem, double& cost,
+                                                         double& lambda, const Damping& damping,
+                                                         LmResult& counts, int maxTrials,
+                                                         bool& systemCurrent,
+                                                         double stopBelow = 0.0)
 {
     systemCurrent = true;
     for (int attempt = 0; attempt < damping.attempts; ++attempt) {
@@ -212,7 +215,8 @@ inline StepOutcome dampedIteration(Model& model, Params& x, System& system, doub
 one taken, stopped by stopCost, divergence, a singular system or the iteration cap); otherwise
 Levenberg-Marquardt (trial steps accepted when they lower the cost). */
 template <class Model, class Params, class System>
-inline LmResult minimise(Model& model, Params& x, System& system, const LmSettings& settings)
+ESSENTIAL_INLINE_INTO_CLONES LmResult minimise(Model& model, Params& x, System& system,
+                                               const LmSettings& settings)
 {
     LmResult result;
     if (settings.damping.initial == 0.0) {

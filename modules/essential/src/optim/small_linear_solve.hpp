@@ -10,6 +10,8 @@
 #ifndef OPENCV_ESSENTIAL_OPTIM_SMALL_LINEAR_SOLVE_HPP
 #define OPENCV_ESSENTIAL_OPTIM_SMALL_LINEAR_SOLVE_HPP
 
+#include "simd_dispatch.hpp"
+
 #include <Eigen/Core>
 
 #include <cmath>
@@ -34,7 +36,8 @@ namespace optim {
 equal ones), or -1 when it is not a usable pivot. That is also the case for a NaN column (every
 comparison with NaN fails, so the largest stays NaN or 0) and an infinite pivot, whose zero
 multipliers would hide it from the solution. */
-template <int N> inline int pivotRow(const Eigen::Matrix<double, N, N>& A, int k)
+template <int N>
+ESSENTIAL_INLINE_INTO_CLONES int pivotRow(const Eigen::Matrix<double, N, N>& A, int k)
 {
     int p = k;
     double largest = std::abs(A(k, k));
@@ -77,28 +80,44 @@ inline bool factorPartialPivot(Eigen::Matrix<double, N, N>& A, int pivot[N], dou
     return true;
 }
 
-/** Solves A x = b by that factorisation: Gaussian elimination on the rows [A | b], the same pivots,
-operations and order as factorPartialPivot followed by LAPACK's getrs (P b, then L y = P b, then
-U x = y), so the same x to the bit, but without storing the multipliers or exchanging their part
-of the rows. Returns false, leaving x unspecified, when A is singular to working precision or the
+/** Solves A x = b by that factorisation: Gaussian elimination on the rows [A | b] with the pivots
+of factorPartialPivot, followed by the substitution, so the same x to the bit as getrf and getrs,
+but without storing the multipliers. The pivot is brought up by conditional exchanges: each row
+below k is compared with row k, and the two are exchanged when the lower one is larger in magnitude
+in column k, so row k ends with the first of the largest, as pivotRow picks it. The rows below are
+then in another order than getrf leaves them, which changes nothing unless two of them tie for a
+later pivot. The comparisons become selects with constant indices, so that the rows stay in
+registers; a row exchange with an index known only at run time made the matrix live in memory (a
+quarter fewer instructions for the 5 x 5 and 8 x 8 solves, callgrind, docs/SOLVERS.md "Cost per
+call"). Returns false, leaving x unspecified, when A is singular to working precision or the
 solution is not finite (A or b held a NaN or an infinity, or A is so near singular that x
-overflows). A and b are taken by value: the elimination works on the copies. (Storing A by rows,
-to make the exchanges contiguous, cost the gn solver 4 k more instructions per call.) */
+overflows). A and b are taken by value: the elimination works on the copies. (Storing A by rows cost
+the gn solver 4 k more instructions per call.) */
 template <int N>
-inline bool solvePartialPivot(Eigen::Matrix<double, N, N> A, Eigen::Matrix<double, N, 1> b,
-                              Eigen::Matrix<double, N, 1>& x)
+ESSENTIAL_INLINE_INTO_CLONES bool solvePartialPivot(Eigen::Matrix<double, N, N> A,
+                                                    Eigen::Matrix<double, N, 1> b,
+                                                    Eigen::Matrix<double, N, 1>& x)
 {
     ESSENTIAL_UNROLL
     for (int k = 0; k < N; ++k) {
-        const int p = pivotRow<N>(A, k);
-        if (p < 0) return false;
-        if (p != k) {
+        ESSENTIAL_UNROLL
+        for (int i = k + 1; i < N; ++i) {
+            // false for a NaN: a NaN never becomes the pivot, as in pivotRow
+            const bool exchange = std::abs(A(i, k)) > std::abs(A(k, k));
             ESSENTIAL_UNROLL
-            for (int j = k; j < N; ++j)
-                std::swap(A(k, j), A(p, j));
-            std::swap(b[k], b[p]);
+            for (int j = k; j < N; ++j) {
+                const double upper = A(k, j), lower = A(i, j);
+                A(k, j) = exchange ? lower : upper;
+                A(i, j) = exchange ? upper : lower;
+            }
+            const double upper = b[k], lower = b[i];
+            b[k] = exchange ? lower : upper;
+            b[i] = exchange ? upper : lower;
         }
-        const double inversePivot = 1.0 / A(k, k);
+        const double pivot = A(k, k);
+        // pivotRow's refusal: no non-zero pivot in the column, or an infinite or NaN one
+        if (!(std::abs(pivot) > 0.0) || !std::isfinite(pivot)) return false;
+        const double inversePivot = 1.0 / pivot;
         ESSENTIAL_UNROLL
         for (int i = k + 1; i < N; ++i) {
             const double factor = A(i, k) * inversePivot;
@@ -138,8 +157,9 @@ template <int N> inline double determinantPartialPivot(Eigen::Matrix<double, N, 
 definite to working precision (a pivot <= 0) or holds a NaN / infinity; the damped normal equations
 of Levenberg-Marquardt are positive definite whenever the Jacobian has no zero column. */
 template <int N>
-inline bool solveCholesky(const Eigen::Matrix<double, N, N>& A,
-                          const Eigen::Matrix<double, N, 1>& b, Eigen::Matrix<double, N, 1>& x)
+ESSENTIAL_INLINE_INTO_CLONES bool solveCholesky(const Eigen::Matrix<double, N, N>& A,
+                                                const Eigen::Matrix<double, N, 1>& b,
+                                                Eigen::Matrix<double, N, 1>& x)
 {
     Eigen::Matrix<double, N, N> L;
     ESSENTIAL_UNROLL

@@ -9,6 +9,8 @@
 #ifndef OPENCV_ESSENTIAL_OPTIM_SMALLEST_EIGENVECTOR_HPP
 #define OPENCV_ESSENTIAL_OPTIM_SMALLEST_EIGENVECTOR_HPP
 
+#include "simd_dispatch.hpp"
+
 #include <Eigen/Core>
 #include <Eigen/Geometry> // cross products
 
@@ -27,7 +29,7 @@ monotonically (quadratically once near). v is then the longest cross product of 
 S - lambda_min I, which span the plane orthogonal to v. Where the two smallest eigenvalues
 coincide (S of rank 1 or 0, e.g. all constraint vectors parallel) any unit vector of that plane is
 an answer; one orthogonal to S's largest row is returned (e1 for S = 0). */
-inline Eigen::Vector3d smallestEigenvector(const Eigen::Matrix3d& S)
+ESSENTIAL_INLINE_INTO_CLONES Eigen::Vector3d smallestEigenvector(const Eigen::Matrix3d& S)
 {
     const double s00 = S(0, 0), s01 = S(1, 0), s02 = S(2, 0), s11 = S(1, 1), s12 = S(2, 1),
                  s22 = S(2, 2);

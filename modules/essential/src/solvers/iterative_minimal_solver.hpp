@@ -28,7 +28,7 @@ one start (gn undamped, lm damped).
 
 A call starts from R = I (with the least-squares translation for it); if that does not give a
 solution that puts the sample in front of both cameras, it starts again from the `extraStarts`
-rotations of StartRotations that best explain the sample (rankStartRotations), in that order, and
+rotations of StartRotations that best explain the sample (StartRanking), in that order, and
 returns the first such solution. A sample whose constraints are linearly dependent gets no start
 (constraintsAreDependent). */
 /** What an engine or a composite may ask of an iterative solver: start from R = I only. The extra
@@ -55,14 +55,40 @@ inline void useIdentityStartOnlyIfIterative(EssentialSolver& solver, bool keepCh
         iterative->useIdentityStartOnly(keepCheirality);
 }
 
+/** Ranked start rotations examined for the extra starts: the first extraStarts of them that put
+the sample in front of the cameras at their start are optimised. */
+constexpr int kRankedStarts = 8;
+
+/** How one call of an iterative solver starts: from R = I, then, when that gave no solution
+(in front of the cameras, with `requireCheirality`), from up to `extraStarts` of the ranked start
+rotations that put the sample in front of the cameras at their start. */
+struct StartPolicy
+{
+    int extraStarts = 0;
+    bool requireCheirality = true;
+};
+
+/** What a call did, for measurements: optimiser iterations over all its starts (linearisations
+undamped, trial steps damped: what each solver's cap counts) and the starts it tried. */
+struct StartCounts
+{
+    int iterations = 0;
+    int starts = 0;
+};
+
+/** The call of IterativeMinimalSolver::solve: the starts of `policy`, each optimised by
+optim::minimise with `optimiser`, the first exact solution (in front of the cameras, with
+requireCheirality) written to solutions[0]. Returns 0 or 1. Compiled into an AVX2 / FMA clone as
+well (simd_dispatch.hpp), the optimiser, the start translation and the depth tests inlined into it:
+fused multiply-adds take a third off the instructions of an iteration (docs/SOLVERS.md, "Cost per
+call"). */
+int solveFromStarts(const Point2d* x1, const Point2d* x2, const StartPolicy& policy,
+                    const optim::LmSettings& optimiser, StartCounts& counts, Matx33d* solutions);
+
 template <class Settings>
 class IterativeMinimalSolver : public EssentialSolver, public IdentityStartOnly
 {
 public:
-    /** Ranked start rotations examined for the extra starts: the first extraStarts of them that
-    put the sample in front of the cameras at their start are optimised. */
-    static constexpr int kRanked = 8;
-
     IterativeMinimalSolver(const Settings& settings, const optim::LmSettings& optimiser)
         : settings_(settings), optimiser_(optimiser)
     {
@@ -92,26 +118,14 @@ public:
 
     int solve(const Point2d* x1, const Point2d* x2, RNG& /*rng*/, Matx33d* solutions) override
     {
-        lastIterations_ = 0;
-        lastStarts_ = 0;
-        if (constraintsAreDependent(x1, x2)) return 0;
-        lastStarts_ = 1;
-        geometry::EssentialPose pose = bestTranslationStart(x1, x2, 5, Eigen::Matrix3d::Identity());
-        if (accept(pose, x1, x2)) return writeSolution(pose, solutions);
-        const int extra = std::min(std::max(settings_.extraStarts, 0), kRanked);
-        if (extra == 0) return 0;
-        int order[kRanked];
-        rankStartRotations(x1, x2, kRanked, order);
-        for (int k = 0, tried = 0; k < kRanked && tried < extra; ++k) {
-            pose = bestTranslationStart(x1, x2, 5, StartRotations::instance()[order[k]]);
-            // A start that cannot put the sample in front of the cameras rarely leads to a root
-            // that can: skipping it costs one depth test instead of an optimisation.
-            if (settings_.requireCheirality && !sampleIsInFront(pose, x1, x2, 5)) continue;
-            ++tried;
-            ++lastStarts_;
-            if (accept(pose, x1, x2)) return writeSolution(pose, solutions);
-        }
-        return 0;
+        StartPolicy policy;
+        policy.extraStarts = std::min(std::max(settings_.extraStarts, 0), kRankedStarts);
+        policy.requireCheirality = settings_.requireCheirality;
+        StartCounts counts;
+        const int found = solveFromStarts(x1, x2, policy, optimiser_, counts, solutions);
+        lastIterations_ = counts.iterations;
+        lastStarts_ = counts.starts;
+        return found;
     }
 
     /** Iterations used by the last call of solve(), over all its starts (for measurements). */
@@ -125,24 +139,6 @@ protected:
     int lastStarts_ = 0;
 
 private:
-    /** Optimises `pose` on the sample; true when it converged to an exact solution. Adds the
-    iterations it used to lastIterations_: linearisations undamped, trial steps damped (what each
-    solver's cap counts). */
-    bool converge(geometry::EssentialPose& pose, const Point2d* x1, const Point2d* x2)
-    {
-        const MinimalSetModel model{x1, x2};
-        optim::SquareSystem system;
-        const optim::LmResult result = optim::minimise(model, pose, system, optimiser_);
-        lastIterations_ += optimiser_.damping.initial == 0.0 ? result.iterations : result.trials;
-        return result.status == optim::LmStatus::Converged;
-    }
-
-    bool accept(geometry::EssentialPose& pose, const Point2d* x1, const Point2d* x2)
-    {
-        return converge(pose, x1, x2) &&
-               (!settings_.requireCheirality || sampleIsInFront(pose, x1, x2, 5));
-    }
-
     /** The rate of the bin of the model's rotation; the model's angle is the smaller of its two
     rotations' (the twisted pair, 180 degrees apart: for a rotation of up to 90 degrees that is
     the true one). Cached: the engine asks several times per model. */

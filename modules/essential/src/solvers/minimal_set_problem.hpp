@@ -11,6 +11,7 @@
 #include "optim/levenberg_marquardt.hpp"
 #include "optim/small_linear_solve.hpp"
 #include "optim/smallest_eigenvector.hpp"
+#include "simd_dispatch.hpp"
 
 #include <opencv2/core.hpp>
 
@@ -29,8 +30,8 @@ translation reaches the true E in 35.7% of calls with 6.5 iterations on average 
 25.4% and 8.2 iterations from a random translation direction; random perturbations of R0 (0.1 and
 0.3 rad) lowered the rate to 28% and 20%. Small inter-frame rotations, the common case in video,
 favour R0 = I further. */
-inline geometry::EssentialPose bestTranslationStart(const Point2d* x1, const Point2d* x2, int n,
-                                                    const Eigen::Matrix3d& R0)
+ESSENTIAL_INLINE_INTO_CLONES geometry::EssentialPose
+bestTranslationStart(const Point2d* x1, const Point2d* x2, int n, const Eigen::Matrix3d& R0)
 {
     Eigen::Matrix3d S = Eigen::Matrix3d::Zero();
     for (int i = 0; i < n; ++i) {
@@ -59,7 +60,7 @@ smallest scaled determinant was 3.1e-14 (1.7e-13 over the paper's protocol and c
 with the normalised rows of the earlier form: two points very close together), and samples of one
 to four distinct correspondences, repeated, gave a pivot of exactly 0 on the same 100 000 scenes:
 the bound 1e-20 is six orders of magnitude below the first. */
-inline bool constraintsAreDependent(const Point2d* x1, const Point2d* x2)
+ESSENTIAL_INLINE_INTO_CLONES bool constraintsAreDependent(const Point2d* x1, const Point2d* x2)
 {
     constexpr double kMinGramDeterminant = 1e-20;
     double G[5][5];
@@ -87,8 +88,9 @@ inline bool constraintsAreDependent(const Point2d* x1, const Point2d* x2)
 }
 
 /** Residuals r (5) and Jacobian J (5x5) of the sample at pose. Returns the squared norm of r. */
-inline double evaluateMinimalSet(const geometry::EssentialPose& pose, const Point2d* x1,
-                                 const Point2d* x2, geometry::Vector5d& r, geometry::Matrix5d& J)
+ESSENTIAL_INLINE_INTO_CLONES double evaluateMinimalSet(const geometry::EssentialPose& pose,
+                                                       const Point2d* x1, const Point2d* x2,
+                                                       geometry::Vector5d& r, geometry::Matrix5d& J)
 {
     const geometry::ResidualFrame frame(pose);
     double row[5];
@@ -101,8 +103,8 @@ inline double evaluateMinimalSet(const geometry::EssentialPose& pose, const Poin
 }
 
 /** Squared norm of the residuals alone (used by LM to judge a trial step). */
-inline double minimalSetCost(const geometry::EssentialPose& pose, const Point2d* x1,
-                             const Point2d* x2)
+ESSENTIAL_INLINE_INTO_CLONES double minimalSetCost(const geometry::EssentialPose& pose,
+                                                   const Point2d* x1, const Point2d* x2)
 {
     const Eigen::Matrix3d E = pose.E();
     double cost = 0.0;
@@ -121,13 +123,18 @@ struct MinimalSetModel
     const Point2d* x1;
     const Point2d* x2;
 
-    double linearise(const geometry::EssentialPose& pose, optim::SquareSystem& system) const
+    ESSENTIAL_INLINE_INTO_CLONES double linearise(const geometry::EssentialPose& pose,
+                                                  optim::SquareSystem& system) const
     {
-        return system.write([&](geometry::Vector5d& r, geometry::Matrix5d& J) {
-            return evaluateMinimalSet(pose, x1, x2, r, J);
-        });
+        return system.write([&](geometry::Vector5d& r, geometry::Matrix5d& J)
+                                ESSENTIAL_LAMBDA_INLINE_INTO_CLONES {
+                                    return evaluateMinimalSet(pose, x1, x2, r, J);
+                                });
     }
-    double cost(const geometry::EssentialPose& pose) const { return minimalSetCost(pose, x1, x2); }
+    ESSENTIAL_INLINE_INTO_CLONES double cost(const geometry::EssentialPose& pose) const
+    {
+        return minimalSetCost(pose, x1, x2);
+    }
 };
 
 } // namespace solvers

@@ -65,8 +65,8 @@ ESSENTIAL_INLINE_INTO_CLONES bool anyPoseInFront(const Eigen::Matrix3d& R, const
 /** Whether one of the four poses (R, +-t), (R', +-t) of E = [t]x R, with R' = (2 t t^T - I) R the
 twisted pair, puts every sample point with a decided depth (kMinCheiralityParallax) in front of
 both cameras. */
-inline bool sampleIsInFront(const geometry::EssentialPose& pose, const Point2d* x1,
-                            const Point2d* x2, int n)
+ESSENTIAL_INLINE_INTO_CLONES bool sampleIsInFront(const geometry::EssentialPose& pose,
+                                                  const Point2d* x1, const Point2d* x2, int n)
 {
     return detail::anyPoseInFront(pose.R, pose.t(), x1, x2, n);
 }

@@ -5,6 +5,7 @@
 #define OPENCV_ESSENTIAL_SOLVERS_SOLUTION_OUTPUT_HPP
 
 #include "geometry/essential_parameterisation.hpp"
+#include "simd_dispatch.hpp"
 
 #include <opencv2/core.hpp>
 
@@ -13,7 +14,8 @@ namespace essential {
 namespace solvers {
 
 /** Writes E = [t]x R of a converged pose as the solver's single solution; returns 1. */
-inline int writeSolution(const geometry::EssentialPose& pose, Matx33d* solutions)
+ESSENTIAL_INLINE_INTO_CLONES int writeSolution(const geometry::EssentialPose& pose,
+                                               Matx33d* solutions)
 {
     const Eigen::Matrix3d E = pose.E();
     for (int i = 0; i < 3; ++i)

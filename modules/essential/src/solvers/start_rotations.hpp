@@ -141,15 +141,38 @@ ESSENTIAL_INLINE_INTO_CLONES void coplanarityCosts(const Point2d* x1, const Poin
                    s02[i] * (s01[i] * s12[i] - s11[i] * s02[i]);
 }
 
-/** coplanarityCosts<5>, compiled into an AVX2 / FMA clone as well (four rotations per vector instead
-of two), which the CPU picks at load time (simd_dispatch.hpp); the clone's fused multiply-adds
-change the costs in the last bits only (test_solvers bounds the difference). */
+/** coplanarityCosts<5>, compiled into an AVX2 / FMA clone as well (four rotations per vector
+instead of two), which the CPU picks at load time (simd_dispatch.hpp); the clone's fused
+multiply-adds change the costs in the last bits only (test_solvers bounds the difference). */
 void sampleCoplanarityCosts(const Point2d* x1, const Point2d* x2,
                             double costs[StartRotations::kCount]);
 
-/** Indices of the `count` candidates of StartRotations with the lowest coplanarity cost on the
-five-point sample, best first (count at most 8; ties keep the lower index first). */
-void rankStartRotations(const Point2d* x1, const Point2d* x2, int count, int* best);
+/** The candidates of StartRotations in the order of their coplanarity cost on a five-point sample,
+lowest first (ties: the lower index first), handed out one at a time: a call of gn or lm rarely
+takes more than one or two, so the order is never sorted in full (a full top-8 insertion cost 1 400
+instructions a ranked call, callgrind, docs/SOLVERS.md "Cost per call"). */
+struct StartRanking
+{
+    double costs[StartRotations::kCount];
+
+    /** The costs of every candidate on the sample (sampleCoplanarityCosts). */
+    void rank(const Point2d* x1, const Point2d* x2) { sampleCoplanarityCosts(x1, x2, costs); }
+
+    /** The index of the lowest cost not yet taken, the first of equal ones, or -1 when none is left
+    (a NaN cost is never taken). */
+    ESSENTIAL_INLINE_INTO_CLONES int takeNext()
+    {
+        int best = -1;
+        double lowest = HUGE_VAL;
+        for (int i = 0; i < StartRotations::kCount; ++i)
+            if (costs[i] < lowest) {
+                lowest = costs[i];
+                best = i;
+            }
+        if (best >= 0) costs[best] = HUGE_VAL; // taken: no longer below any cost
+        return best;
+    }
+};
 
 } // namespace solvers
 } // namespace essential

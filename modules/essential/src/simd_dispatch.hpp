@@ -19,10 +19,10 @@
     !defined(__AVX2__) && !defined(ESSENTIAL_NO_CLONES)
 /** The clone's target: AVX2 and FMA (and the level's other extensions), not AVX-512. */
 #define ESSENTIAL_CLONE_TARGET "arch=x86-64-v3"
-#define ESSENTIAL_AVX2_CLONES __attribute__((target_clones(ESSENTIAL_CLONE_TARGET, "default")))
+#define ESSENTIAL_SIMD_CLONES __attribute__((target_clones(ESSENTIAL_CLONE_TARGET, "default")))
 #define ESSENTIAL_HAS_CLONES 1
 #else
-#define ESSENTIAL_AVX2_CLONES
+#define ESSENTIAL_SIMD_CLONES
 #define ESSENTIAL_HAS_CLONES 0
 #endif
 

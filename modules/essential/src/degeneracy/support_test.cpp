@@ -45,7 +45,7 @@ int poissonQuantile(double lambda, double level)
 
 /** How many of the count pairs (x1[i], y1[i]; x2[i], y2[i]) pass the inlier test: a loop with no
 wrap-around index and no branch, which the compiler vectorises in each clone. */
-ESSENTIAL_AVX2_CLONES long pairHits(const geometry::EssentialEntries& e, const double* x1,
+ESSENTIAL_SIMD_CLONES long pairHits(const geometry::EssentialEntries& e, const double* x1,
                                     const double* y1, const double* x2, const double* y2, int count,
                                     bool symmetric, double t2)
 {

@@ -119,7 +119,7 @@ namespace {
 /** normalisedProblem's pass over one array: `n` rows of `stride` doubles (x, y first) into x / y;
 returns how many points are out of range. Counted, not branched on, so that the loop has no early
 exit; the common stride of 2 (N x 2 rows) gets a loop of its own, which the compiler vectorises. */
-ESSENTIAL_AVX2_CLONES int normaliseRows(const Normalisation& k, const double* r, size_t stride,
+ESSENTIAL_SIMD_CLONES int normaliseRows(const Normalisation& k, const double* r, size_t stride,
                                         int n, double* x, double* y)
 {
     int outside = 0;

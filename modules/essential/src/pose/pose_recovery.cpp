@@ -81,13 +81,13 @@ ESSENTIAL_INLINE_POSE void voteAll(const Problem& points, const double* r1, cons
     counts[3] = c3;
 }
 
-ESSENTIAL_AVX2_CLONES void voteMasked(const Problem& points, const double* r1, const double* t,
+ESSENTIAL_SIMD_CLONES void voteMasked(const Problem& points, const double* r1, const double* t,
                                       const uchar* maskIn, uchar* bits, int counts[4])
 {
     voteAll<true>(points, r1, t, maskIn, bits, counts);
 }
 
-ESSENTIAL_AVX2_CLONES void voteUnmasked(const Problem& points, const double* r1, const double* t,
+ESSENTIAL_SIMD_CLONES void voteUnmasked(const Problem& points, const double* r1, const double* t,
                                         uchar* bits, int counts[4])
 {
     voteAll<false>(points, r1, t, nullptr, bits, counts);

@@ -190,13 +190,13 @@ are given, the IRLS normal equations A d = -g there: Gauss-Newton on the Sampson
 the weights w_i = rho'(s_i) / s_i held fixed, A = sum w J J^T, g = sum w s J. One pass over the
 points computes both, so that an accepted step already has the next iteration's equations. Points
 with no Sampson distance (D = 0) take no part. */
-ESSENTIAL_AVX2_CLONES double evaluateCauchy(const Problem& p, const EssentialPose& pose,
+ESSENTIAL_SIMD_CLONES double evaluateCauchy(const Problem& p, const EssentialPose& pose,
                                             double sigma2, Matrix5d* A, Vector5d* g)
 {
     return evaluateLoss<optim::CauchyLoss>(p, pose, sigma2, A, g);
 }
 
-ESSENTIAL_AVX2_CLONES double evaluateTukey(const Problem& p, const EssentialPose& pose,
+ESSENTIAL_SIMD_CLONES double evaluateTukey(const Problem& p, const EssentialPose& pose,
                                            double sigma2, Matrix5d* A, Vector5d* g)
 {
     return evaluateLoss<optim::TukeyLoss>(p, pose, sigma2, A, g);

@@ -83,7 +83,7 @@ ESSENTIAL_INLINE_SCORE void verdicts(const geometry::EssentialEntries& e, const 
     }
 }
 
-ESSENTIAL_AVX2_CLONES void blockVerdicts(const geometry::EssentialEntries& e, const double* r1,
+ESSENTIAL_SIMD_CLONES void blockVerdicts(const geometry::EssentialEntries& e, const double* r1,
                                          const double* t, const double* x1, const double* y1,
                                          const double* x2, const double* y2, int count,
                                          bool symmetric, double t2, double minParallax2, double* d2,

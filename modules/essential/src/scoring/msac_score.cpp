@@ -50,7 +50,7 @@ Score scoreMsac(const Matx33d& E, const Problem& problem, InlierTest test, doubl
     return scoreMsacRange(E, problem, test, 0, problem.size(), bestCost);
 }
 
-ESSENTIAL_AVX2_CLONES Score scoreMsacRange(const Matx33d& E, const Problem& problem,
+ESSENTIAL_SIMD_CLONES Score scoreMsacRange(const Matx33d& E, const Problem& problem,
                                            InlierTest test, int first, int last, double bestCost)
 {
     const double t2 = test.threshold * test.threshold;
@@ -79,7 +79,7 @@ ESSENTIAL_AVX2_CLONES Score scoreMsacRange(const Matx33d& E, const Problem& prob
 points, so shorter blocks than kBlock waste less of the vectorised distance computation. */
 constexpr int kSprtBlock = 16;
 
-ESSENTIAL_AVX2_CLONES Score scoreMsacSprt(const Matx33d& E, const Problem& problem, InlierTest test,
+ESSENTIAL_SIMD_CLONES Score scoreMsacSprt(const Matx33d& E, const Problem& problem, InlierTest test,
                                           double bestCost, const SprtTest& sprt, bool& rejected)
 {
     const double t2 = test.threshold * test.threshold;
@@ -109,7 +109,7 @@ ESSENTIAL_AVX2_CLONES Score scoreMsacSprt(const Matx33d& E, const Problem& probl
     return s;
 }
 
-ESSENTIAL_AVX2_CLONES void sampsonErrors(const Matx33d& E, const Problem& problem, double* errors)
+ESSENTIAL_SIMD_CLONES void sampsonErrors(const Matx33d& E, const Problem& problem, double* errors)
 {
     const geometry::EssentialEntries e(E);
     for (int i = 0; i < problem.size(); ++i)
@@ -117,13 +117,13 @@ ESSENTIAL_AVX2_CLONES void sampsonErrors(const Matx33d& E, const Problem& proble
             geometry::sampsonSquared(e, problem.x1[i], problem.y1[i], problem.x2[i], problem.y2[i]);
 }
 
-ESSENTIAL_AVX2_CLONES void squaredDistances(const Matx33d& E, const Problem& problem,
+ESSENTIAL_SIMD_CLONES void squaredDistances(const Matx33d& E, const Problem& problem,
                                             InlierTest test, double* errors)
 {
     distanceBlock(E, problem, test.distance, 0, problem.size(), errors);
 }
 
-ESSENTIAL_AVX2_CLONES void distanceBands(const Matx33d& E, const Problem& problem, InlierTest test,
+ESSENTIAL_SIMD_CLONES void distanceBands(const Matx33d& E, const Problem& problem, InlierTest test,
                                          int bands, int* counts)
 {
     for (int k = 0; k < bands; ++k)
@@ -143,7 +143,7 @@ ESSENTIAL_AVX2_CLONES void distanceBands(const Matx33d& E, const Problem& proble
     }
 }
 
-ESSENTIAL_AVX2_CLONES int inlierMask(const Matx33d& E, const Problem& problem, InlierTest test,
+ESSENTIAL_SIMD_CLONES int inlierMask(const Matx33d& E, const Problem& problem, InlierTest test,
                                      uchar* mask)
 {
     const int n = problem.size();

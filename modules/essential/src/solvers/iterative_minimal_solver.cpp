@@ -25,7 +25,7 @@ ESSENTIAL_INLINE_INTO_CLONES bool converges(geometry::EssentialPose& pose, const
 
 } // namespace
 
-__attribute__((flatten)) ESSENTIAL_AVX2_CLONES int
+__attribute__((flatten)) ESSENTIAL_SIMD_CLONES int
 solveFromStarts(const Point2d* x1, const Point2d* x2, const StartPolicy& policy,
                 const optim::LmSettings& optimiser, StartCounts& counts, Matx33d* solutions)
 {

@@ -307,7 +307,7 @@ ESSENTIAL_INLINE_INTO_CLONES bool nullSpace(const double R1[3][3], const double 
 /** The constraint matrix M of the basis A, reduced: B[r - 4] is row r = 4..9 of the Gauss-Jordan
 form of M on the last ten monomials (xz^2 ... 1); false if M's leading 10 x 10 block is singular.
 */
-ESSENTIAL_AVX2_CLONES bool reduceConstraints(const double A[5][4], double B[6][10])
+ESSENTIAL_SIMD_CLONES bool reduceConstraints(const double A[5][4], double B[6][10])
 {
     double M[10][20];
     nisterConstraintMatrix(A, M);
@@ -377,7 +377,7 @@ struct FrameWork
 
 /** Null space, reduced constraints, C(z), d(z) and its Sturm sequence in one frame; false when the
 sample or M is degenerate or d vanishes. */
-ESSENTIAL_AVX2_CLONES bool prepareFrame(const double R1[3][3], const double R2[3][3],
+ESSENTIAL_SIMD_CLONES bool prepareFrame(const double R1[3][3], const double R2[3][3],
                                         const Point2d* x1, const Point2d* x2, double bound,
                                         FrameWork& w)
 {
@@ -706,7 +706,7 @@ int realRoots(const FrameWork& w, const NisterSettings& settings, double bound, 
 
 /** The essential matrices of the roots of w's d(z), in camera coordinates (R1, R2: the frame's
 rotations); roots whose matrix fails the trace constraint by more than maxResidual are dropped. */
-ESSENTIAL_AVX2_CLONES int essentialMatrices(const FrameWork& w, const double R1[3][3],
+ESSENTIAL_SIMD_CLONES int essentialMatrices(const FrameWork& w, const double R1[3][3],
                                             const double R2[3][3], const double* roots,
                                             int numRoots, double maxResidual, Matx33d* solutions,
                                             NisterFivePointSolver::Diagnostics& diagnostics)

@@ -7,7 +7,7 @@ namespace cv {
 namespace essential {
 namespace solvers {
 
-ESSENTIAL_AVX2_CLONES int keepSolutionsInFront(Matx33d* solutions, int count, const Point2d* x1,
+ESSENTIAL_SIMD_CLONES int keepSolutionsInFront(Matx33d* solutions, int count, const Point2d* x1,
                                                const Point2d* x2, int n)
 {
     int kept = 0;

@@ -7,7 +7,7 @@ namespace cv {
 namespace essential {
 namespace solvers {
 
-ESSENTIAL_AVX2_CLONES void sampleCoplanarityCosts(const Point2d* x1, const Point2d* x2,
+ESSENTIAL_SIMD_CLONES void sampleCoplanarityCosts(const Point2d* x1, const Point2d* x2,
                                                   double costs[StartRotations::kCount])
 {
     coplanarityCosts<5>(x1, x2, costs);

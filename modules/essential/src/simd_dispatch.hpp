@@ -28,7 +28,7 @@
 
 /** For a loop in a header that a marked function calls: GCC does not inline a function into a
 caller with a different target unless told to, and the loop would then run its default build from
-both clones. */
+both clones. ESSENTIAL_LAMBDA_INLINE_INTO_CLONES is the same for a lambda, after its parameters. */
 #if defined(__GNUC__)
 #define ESSENTIAL_INLINE_INTO_CLONES inline __attribute__((always_inline))
 #define ESSENTIAL_LAMBDA_INLINE_INTO_CLONES __attribute__((always_inline))

@@ -36,8 +36,7 @@ namespace optim {
 equal ones), or -1 when it is not a usable pivot. That is also the case for a NaN column (every
 comparison with NaN fails, so the largest stays NaN or 0) and an infinite pivot, whose zero
 multipliers would hide it from the solution. */
-template <int N>
-ESSENTIAL_INLINE_INTO_CLONES int pivotRow(const Eigen::Matrix<double, N, N>& A, int k)
+template <int N> inline int pivotRow(const Eigen::Matrix<double, N, N>& A, int k)
 {
     int p = k;
     double largest = std::abs(A(k, k));

@@ -25,9 +25,10 @@ ESSENTIAL_INLINE_INTO_CLONES bool converges(geometry::EssentialPose& pose, const
 
 } // namespace
 
-__attribute__((flatten)) ESSENTIAL_SIMD_CLONES int
-solveFromStarts(const Point2d* x1, const Point2d* x2, const StartPolicy& policy,
-                const optim::LmSettings& optimiser, StartCounts& counts, Matx33d* solutions)
+ESSENTIAL_FLATTEN ESSENTIAL_SIMD_CLONES int solveFromStarts(const Point2d* x1, const Point2d* x2,
+                                                            const StartPolicy& policy,
+                                                            const optim::LmSettings& optimiser,
+                                                            StartCounts& counts, Matx33d* solutions)
 {
     counts = StartCounts();
     if (constraintsAreDependent(x1, x2)) return 0;

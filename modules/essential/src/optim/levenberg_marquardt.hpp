@@ -68,7 +68,7 @@ public:
 
     ESSENTIAL_INLINE_INTO_CLONES bool solve(double lambda, Vector5& step)
     {
-        if (lambda == 0.0) return solvePartialPivot<5>(J_, -r_, step) && step.allFinite();
+        if (lambda == 0.0) return solvePartialPivot<5>(J_, -r_, step); // false unless finite
         if (!normalFormed_) {
             normal_.A = J_.transpose() * J_;
             normal_.g = J_.transpose() * r_;
